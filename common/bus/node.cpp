@@ -1,0 +1,366 @@
+#include "common/bus/node.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <random>
+
+#include <spdlog/spdlog.h>
+
+#include "common/bus/endpoint.hpp"
+#include "common/bus/errors.hpp"
+#include "common/bus/topics.hpp"
+#include "common/util/clock.hpp"
+
+namespace chatsim::bus {
+namespace {
+
+uint64_t random_instance() {
+  std::random_device rd;
+  const uint64_t v = (uint64_t{rd()} << 32) ^ rd() ^ static_cast<uint64_t>(now_ns());
+  return v == 0 ? 1 : v;
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  if (gethostname(buf, sizeof buf - 1) != 0) return "unknown";
+  return buf;
+}
+
+void configure(zmq::socket_t& s, const NodeOptions& o) {
+  s.set(zmq::sockopt::linger, o.linger_ms);
+  s.set(zmq::sockopt::sndhwm, o.send_hwm);
+  s.set(zmq::sockopt::rcvhwm, o.receive_hwm);
+}
+
+bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+
+// Zero-copy hand-over of a finished builder's buffer to ZeroMQ.
+zmq::message_t take_buffer(flatbuffers::FlatBufferBuilder& fbb) {
+  auto* detached = new flatbuffers::DetachedBuffer(fbb.Release());
+  return zmq::message_t(
+      detached->data(), detached->size(),
+      [](void*, void* hint) { delete static_cast<flatbuffers::DetachedBuffer*>(hint); }, detached);
+}
+
+}  // namespace
+
+Node::Node(NodeOptions options, std::shared_ptr<zmq::context_t> context)
+    : options_(std::move(options)),
+      context_(context ? std::move(context) : std::make_shared<zmq::context_t>(1)),
+      instance_(random_instance()) {
+  if (options_.name.empty()) throw std::invalid_argument("bus node: empty --name");
+  if (options_.name.find('/') != std::string::npos) {
+    throw std::invalid_argument("bus node name '" + options_.name + "' must not contain '/'");
+  }
+  if (options_.kind.empty()) options_.kind = options_.name;
+  reply_topic_ = topics::reply(options_.name, instance_);
+}
+
+Node::~Node() { shutdown(); }
+
+void Node::start() {
+  if (started_) return;
+  const BusEndpoints ep = split_bus_endpoint(options_.bus);
+  pub_ = std::make_unique<zmq::socket_t>(*context_, zmq::socket_type::pub);
+  sub_ = std::make_unique<zmq::socket_t>(*context_, zmq::socket_type::sub);
+  configure(*pub_, options_);
+  configure(*sub_, options_);
+  pub_->connect(ep.publish);
+  sub_->connect(ep.subscribe);
+  start_mono_s_ = mono_s();
+  started_ = true;
+  sub_->set(zmq::sockopt::subscribe, reply_topic_);
+  for (const auto& s : subscriptions_) sub_->set(zmq::sockopt::subscribe, s.topic);
+  sync();
+  if (options_.heartbeat_period.count() > 0) {
+    heartbeat_thread_ = std::thread([this] { heartbeat_loop(); });
+  }
+  state_.store(msgs::NodeState::Ready);
+}
+
+void Node::shutdown() {
+  if (shut_down_) return;
+  shut_down_ = true;
+  state_.store(msgs::NodeState::Stopping);
+  heartbeat_stop_.store(true);
+  if (heartbeat_thread_.joinable()) heartbeat_thread_.join();
+  if (sub_) sub_->close();
+  if (pub_) pub_->close();
+}
+
+void Node::subscribe(const std::string& topic, Handler handler) {
+  add_subscription({topic, false, std::move(handler)});
+}
+
+void Node::subscribe_prefix(const std::string& prefix, Handler handler) {
+  add_subscription({prefix, true, std::move(handler)});
+}
+
+void Node::add_subscription(Subscription sub) {
+  const bool known = std::any_of(subscriptions_.begin(), subscriptions_.end(),
+                                 [&](const Subscription& s) { return s.topic == sub.topic; });
+  subscriptions_.push_back(std::move(sub));
+  if (started_ && !known) {
+    sub_->set(zmq::sockopt::subscribe, subscriptions_.back().topic);
+    sync();
+  }
+}
+
+uint64_t Node::next_seq(std::string_view topic) {
+  auto it = seqs_.find(topic);
+  if (it == seqs_.end()) it = seqs_.emplace(std::string(topic), 0).first;
+  return ++it->second;
+}
+
+PublishStatus Node::publish(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb,
+                            msgs::Payload type, flatbuffers::Offset<void> payload,
+                            const PublishOptions& options) {
+  if (!started_ || shut_down_) throw BusError("node '" + options_.name + "' is not running");
+  auto header = msgs::CreateHeader(
+      fbb, fbb.CreateString(topic), fbb.CreateString(options_.name), instance_, next_seq(topic),
+      now_ns(), options.correlation_id.empty() ? flatbuffers::Offset<flatbuffers::String>()
+                                      : fbb.CreateString(options.correlation_id),
+      options.reply_to.empty() ? flatbuffers::Offset<flatbuffers::String>()
+                                : fbb.CreateString(options.reply_to), options.deadline_ns);
+  msgs::FinishEnvelopeBuffer(fbb, msgs::CreateEnvelope(fbb, header, type, payload));
+
+  zmq::message_t topic_frame(topic.data(), topic.size());
+  zmq::message_t body = take_buffer(fbb);
+  if (!pub_->send(topic_frame, zmq::send_flags::sndmore | zmq::send_flags::dontwait)) {
+    return PublishStatus::WouldBlock;
+  }
+  // Once the first frame is queued the second always is: ZeroMQ queues multipart atomically.
+  pub_->send(body, zmq::send_flags::none);
+  stats_.sent.fetch_add(1, std::memory_order_relaxed);
+  return PublishStatus::Sent;
+}
+
+std::optional<Message> Node::receive(std::chrono::milliseconds timeout) {
+  zmq::pollitem_t item{sub_->handle(), 0, ZMQ_POLLIN, 0};
+  try {
+    if (zmq::poll(&item, 1, timeout) == 0) return std::nullopt;
+  } catch (const zmq::error_t& e) {
+    if (e.num() == EINTR) return std::nullopt;  // a signal: let the caller look at its stop flag
+    throw;
+  }
+  zmq::message_t topic_frame;
+  if (!sub_->recv(topic_frame, zmq::recv_flags::dontwait)) return std::nullopt;
+  bool well_framed = topic_frame.more();
+  zmq::message_t body;
+  if (well_framed) {
+    (void)sub_->recv(body, zmq::recv_flags::none);
+    while (body.more()) {  // extra frames: drain and reject the whole message
+      well_framed = false;
+      zmq::message_t extra;
+      (void)sub_->recv(extra, zmq::recv_flags::none);
+      if (!extra.more()) break;
+    }
+  }
+  stats_.received.fetch_add(1, std::memory_order_relaxed);
+  Message message(std::move(body));
+  const bool valid = well_framed && message.verify() &&
+                     message.topic() == topic_frame.to_string_view();
+  if (!valid) {
+    const uint64_t n = stats_.invalid.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (n <= 5 || n % 1000 == 0) {
+      spdlog::warn("[{}] dropped an invalid message on '{}' ({} bytes; {} invalid so far)",
+                   options_.name, topic_frame.to_string_view(), message.size(), n);
+    }
+    return std::nullopt;
+  }
+  const auto& h = message.header();
+  const auto obs = tracker_.observe(message.sender(), h.sender_instance(), message.topic(), h.seq());
+  if (obs.missing > 0) {
+    stats_.gaps.fetch_add(obs.missing, std::memory_order_relaxed);
+    spdlog::warn("[{}] {} message(s) lost on '{}' from '{}' (sequence gap)", options_.name,
+                 obs.missing, message.topic(), message.sender());
+  }
+  if (obs.duplicate) stats_.duplicates.fetch_add(1, std::memory_order_relaxed);
+  return message;
+}
+
+void Node::dispatch(const Message& message) {
+  const std::string_view topic = message.topic();
+  if (topic == reply_topic_) {
+    stats_.late_replies.fetch_add(1, std::memory_order_relaxed);
+    return;
+  }
+  for (size_t i = 0; i < subscriptions_.size(); ++i) {
+    const Subscription& s = subscriptions_[i];
+    const bool match = s.prefix ? starts_with(topic, s.topic) : topic == s.topic;
+    if (!match) continue;
+    try {
+      s.handler(message);
+    } catch (const std::exception& e) {
+      spdlog::error("[{}] handler for '{}' failed: {}", options_.name, topic, e.what());
+    }
+  }
+}
+
+size_t Node::spin_once(std::chrono::milliseconds timeout) {
+  size_t n = 0;
+  while (!queued_.empty()) {
+    Message m = std::move(queued_.front());
+    queued_.pop_front();
+    dispatch(m);
+    ++n;
+  }
+  if (n > 0) timeout = 0ms;
+  for (auto m = receive(timeout); m; m = receive(0ms)) {
+    dispatch(*m);
+    if (++n >= 1000) break;  // let the caller look at its stop flag now and then
+  }
+  return n;
+}
+
+void Node::spin(const std::atomic<bool>& stop) {
+  while (!stop.load()) spin_once(100ms);
+}
+
+CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb,
+                      msgs::Payload type, flatbuffers::Offset<void> payload,
+                      std::chrono::milliseconds timeout) {
+  const std::string correlation = options_.name + "/" + topics::hex(instance_) + "/" +
+                                  std::to_string(++call_counter_);
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  PublishOptions po{correlation, reply_topic_,
+                    now_ns() + std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count()};
+  CallResult result;
+  if (publish(topic, fbb, type, payload, po) != PublishStatus::Sent) {
+    result.error = msgs::ErrorCode::Unavailable;
+    result.error_message = "could not send on '" + std::string(topic) + "' (queue full)";
+    return result;
+  }
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) break;
+    auto m = receive(std::min(left, std::chrono::milliseconds(100)));
+    if (!m) continue;
+    if (m->topic() == reply_topic_) {
+      if (m->correlation_id() == correlation) {
+        result.response = std::move(m);
+        return result;
+      }
+      stats_.late_replies.fetch_add(1, std::memory_order_relaxed);
+      continue;
+    }
+    queued_.push_back(std::move(*m));
+  }
+  result.error = msgs::ErrorCode::DeadlineExceeded;
+  result.error_message = "no response on '" + std::string(topic) + "' within " +
+                         std::to_string(timeout.count()) + " ms";
+  return result;
+}
+
+PublishStatus Node::respond(const Message& request, flatbuffers::FlatBufferBuilder& fbb,
+                            msgs::Payload type, flatbuffers::Offset<void> payload) {
+  const std::string_view reply_to = view(request.header().reply_to());
+  if (reply_to.empty()) {
+    fbb.Clear();
+    return PublishStatus::Sent;  // a plain publication wants no answer
+  }
+  PublishOptions po;
+  po.correlation_id = std::string(request.correlation_id());
+  return publish(reply_to, fbb, type, payload, po);
+}
+
+void Node::serve(const std::string& topic, ServeHandler handler) {
+  subscribe(topic, [this, handler = std::move(handler)](const Message& request) {
+    const int64_t deadline = request.header().deadline_ns();
+    if (deadline != 0 && now_ns() > deadline) {
+      stats_.expired.fetch_add(1, std::memory_order_relaxed);
+      spdlog::warn("[{}] dropped a request from '{}' on '{}': its deadline had passed",
+                   options_.name, request.sender(), request.topic());
+      return;
+    }
+    flatbuffers::FlatBufferBuilder fbb(1024);
+    Reply reply{};
+    const auto previous = state_.exchange(msgs::NodeState::Busy);
+    try {
+      reply = handler(request, fbb);
+    } catch (const std::exception& e) {
+      fbb.Clear();
+      reply = {msgs::Payload::Error,
+               make_error(fbb, msgs::ErrorCode::Internal, "request failed", options_.name, e.what())
+                   .Union()};
+    }
+    state_.store(previous);
+    respond(request, fbb, reply.type, reply.payload);
+  });
+}
+
+void Node::probe_until_echo(const std::string& probe_topic) {
+  bool echoed = false;
+  sub_->set(zmq::sockopt::subscribe, probe_topic);
+  const auto deadline = std::chrono::steady_clock::now() + options_.handshake_timeout;
+  while (!echoed && std::chrono::steady_clock::now() < deadline) {
+    flatbuffers::FlatBufferBuilder fbb(128);
+    publish(probe_topic, fbb, msgs::Payload::Probe, msgs::CreateProbe(fbb, probe_counter_).Union());
+    const auto until = std::chrono::steady_clock::now() + 20ms;
+    while (std::chrono::steady_clock::now() < until) {
+      auto m = receive(5ms);
+      if (!m) continue;
+      if (m->topic() == probe_topic) {
+        echoed = true;
+        break;
+      }
+      queued_.push_back(std::move(*m));
+    }
+  }
+  sub_->set(zmq::sockopt::unsubscribe, probe_topic);
+  if (!echoed) {
+    throw BusError("node '" + options_.name + "': no answer from the bus proxy at " +
+                   options_.bus + " within " + std::to_string(options_.handshake_timeout.count()) +
+                   " ms (is chatsim-bus running there?)");
+  }
+}
+
+void Node::sync() {
+  // A fresh probe topic each time: its subscription travels behind every earlier one on the
+  // same connection, so its echo proves the proxy has processed them all.
+  probe_until_echo(topics::probe(options_.name, instance_, ++probe_counter_));
+}
+
+void Node::heartbeat_loop() {
+  zmq::socket_t pub(*context_, zmq::socket_type::pub);
+  configure(pub, options_);
+  pub.connect(split_bus_endpoint(options_.bus).publish);
+  const std::string host = host_name();
+  const std::string topic(topics::kHeartbeat);
+  uint64_t seq = 0;
+  auto beat = [&](msgs::NodeState state) {
+    flatbuffers::FlatBufferBuilder fbb(256);
+    auto hb = msgs::CreateHeartbeat(
+        fbb, fbb.CreateString(options_.name), fbb.CreateString(options_.kind),
+        static_cast<int32_t>(getpid()), fbb.CreateString(host), state, mono_s() - start_mono_s_,
+        static_cast<uint32_t>(options_.heartbeat_period.count()), stats_.received.load(),
+        stats_.invalid.load(), stats_.gaps.load());
+    auto header = msgs::CreateHeader(fbb, fbb.CreateString(topic), fbb.CreateString(options_.name),
+                                     instance_, ++seq, now_ns());
+    msgs::FinishEnvelopeBuffer(
+        fbb, msgs::CreateEnvelope(fbb, header, msgs::Payload::Heartbeat, hb.Union()));
+    zmq::message_t topic_frame(topic.data(), topic.size());
+    zmq::message_t body = take_buffer(fbb);
+    if (pub.send(topic_frame, zmq::send_flags::sndmore | zmq::send_flags::dontwait)) {
+      pub.send(body, zmq::send_flags::none);
+    }
+  };
+  // The first few beats come quickly: this socket is new and the first may be lost while it
+  // connects, and launchers wait for a beat before starting the next process.
+  auto next = std::chrono::steady_clock::now();
+  int beats = 0;
+  while (!heartbeat_stop_.load()) {
+    if (std::chrono::steady_clock::now() >= next) {
+      beat(state_.load());
+      next += ++beats < 5 ? std::min<std::chrono::milliseconds>(options_.heartbeat_period, 25ms)
+                          : options_.heartbeat_period;
+    }
+    std::this_thread::sleep_for(std::min<std::chrono::milliseconds>(options_.heartbeat_period, 20ms));
+  }
+  beat(msgs::NodeState::Stopping);  // a clean goodbye, so monitors do not report a failure
+  pub.close();
+}
+
+}  // namespace chatsim::bus

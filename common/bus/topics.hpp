@@ -1,0 +1,35 @@
+#pragma once
+// Topic names. Channels an agent serves are derived from its kind so launch files can rename
+// nodes freely; a request's response goes to the requester's own reply topic.
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace chatsim::bus::topics {
+
+inline constexpr std::string_view kHeartbeat = "/bus/heartbeat";
+inline constexpr std::string_view kProbePrefix = "/bus/probe/";
+inline constexpr std::string_view kChatRequest = "/chat/request";
+inline constexpr std::string_view kChatProgress = "/chat/progress";
+
+inline std::string hex(uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+// Requests to an agent kind, e.g. "/agent/motion/request".
+inline std::string agent_request(std::string_view kind) {
+  return "/agent/" + std::string(kind) + "/request";
+}
+
+inline std::string reply(std::string_view node, uint64_t instance) {
+  return "/reply/" + std::string(node) + "/" + hex(instance);
+}
+
+inline std::string probe(std::string_view node, uint64_t instance, uint64_t n) {
+  return std::string(kProbePrefix) + std::string(node) + "/" + hex(instance) + "/" + std::to_string(n);
+}
+
+}  // namespace chatsim::bus::topics

@@ -1,0 +1,34 @@
+#pragma once
+// What every agent process shares: common options, and serving an Agent on the bus.
+// Each *_main.cpp is a few lines on top of this.
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "agents/core/agent.hpp"
+
+namespace chatsim::processes {
+
+struct AgentProcessOptions {
+  std::string bus;
+  std::string name;
+  std::string kind;
+  int heartbeat_ms = 500;
+  int handshake_timeout_ms = 10000;
+};
+
+// --bus, --name, --heartbeat-ms, --handshake-timeout-ms.
+void add_node_options(CLI::App& app, AgentProcessOptions& options);
+
+// Parses argv; returns -1 to go on, else the exit code to return (help: 0, bad usage: 2).
+int parse_or_exit(CLI::App& app, int argc, char** argv);
+
+// Serves agent on the bus (requests on /agent/<kind>/request; the manager also serves
+// /chat/request) until SIGINT/SIGTERM. Returns the process exit code.
+int serve_agent(const AgentProcessOptions& options, std::unique_ptr<agents::Agent> agent);
+
+// The whole main() of an agent process with no options of its own.
+int agent_main(int argc, char** argv, const std::string& kind);
+
+}  // namespace chatsim::processes

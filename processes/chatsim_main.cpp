@@ -1,0 +1,14 @@
+// chatsim: the user's command, with sub-commands in the spirit of ros2.
+#include "common/util/exit_codes.hpp"
+#include "processes/agent_process.hpp"
+#include "processes/cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app("chatsim: edit recorded driving scenes from natural-language commands");
+  app.require_subcommand(1);
+  int result = chatsim::exit_code::kOk;
+  chatsim::cli::add_launch_command(app, result);
+  chatsim::cli::add_bench_command(app, result);
+  if (const int code = chatsim::processes::parse_or_exit(app, argc, argv); code >= 0) return code;
+  return result;
+}

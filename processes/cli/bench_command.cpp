@@ -1,0 +1,72 @@
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "bench/bus_bench.hpp"
+#include "common/util/exit_codes.hpp"
+#include "processes/cli/commands.hpp"
+
+namespace chatsim::cli {
+namespace {
+
+struct BusBenchArgs {
+  bench::BusBenchConfig config;
+  std::string out = "bench/results/bus.json";
+  bool quick = false;
+};
+
+int run_bus_bench(BusBenchArgs a) {
+  if (a.quick) {
+    a.config.small_count = 20000;
+    a.config.image_count = 20;
+    a.config.latency_count = 1000;
+    a.config.repeats = 1;
+  }
+  std::cerr << "bench bus: raw ZeroMQ PUB/SUB vs the bus, tcp loopback (takes ~"
+            << (a.quick ? "5" : "30") << " s)..." << std::endl;
+  const auto report = bench::run_bus_bench(a.config);
+  const auto& r = report["ratios"];
+  const auto& t = report["targets"];
+  auto mark = [](bool ok) { return ok ? "met" : "MISSED"; };
+  std::printf("1 KB throughput : bus %.0f msg/s, raw %.0f msg/s, ratio %.2f (target >= 0.70: %s)\n",
+              report["bus"]["small"]["messages_per_s"].get<double>(),
+              report["raw_zmq"]["small"]["messages_per_s"].get<double>(),
+              r["small_throughput"].get<double>(), mark(t["small_throughput_met"]));
+  std::printf("6 MB throughput : bus %.0f MB/s, raw %.0f MB/s, ratio %.2f (target >= 0.80: %s)\n",
+              report["bus"]["image"]["mb_per_s"].get<double>(),
+              report["raw_zmq"]["image"]["mb_per_s"].get<double>(),
+              r["image_throughput"].get<double>(), mark(t["image_throughput_met"]));
+  std::printf("1 KB round trip : bus p50 %.3f ms p99 %.3f ms, raw p50 %.3f ms p99 %.3f ms "
+              "(target bus p99 < 1 ms: %s)\n",
+              report["bus"]["latency"]["rtt_p50_ms"].get<double>(),
+              report["bus"]["latency"]["rtt_p99_ms"].get<double>(),
+              report["raw_zmq"]["latency"]["rtt_p50_ms"].get<double>(),
+              report["raw_zmq"]["latency"]["rtt_p99_ms"].get<double>(), mark(t["latency_p99_met"]));
+  if (!a.out.empty()) {
+    const std::filesystem::path out(a.out);
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    const auto tmp = out.string() + ".tmp";
+    std::ofstream(tmp) << report.dump(2) << "\n";
+    std::filesystem::rename(tmp, out);
+    std::printf("wrote %s\n", out.c_str());
+  }
+  return exit_code::kOk;
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, int& result) {
+  auto* bench = app.add_subcommand("bench", "Benchmarks; results go to bench/results/");
+  bench->require_subcommand(1);
+  auto args = std::make_shared<BusBenchArgs>();
+  auto* bus = bench->add_subcommand(
+      "bus", "Bus latency and throughput against raw ZeroMQ PUB/SUB in the same run");
+  bus->add_option("--out", args->out, "JSON report path (empty: do not write)")->capture_default_str();
+  bus->add_flag("--quick", args->quick, "fewer messages: a smoke run, not a measurement");
+  bus->add_option("--small-count", args->config.small_count, "number of 1 KB messages");
+  bus->add_option("--image-count", args->config.image_count, "number of 6 MB messages");
+  bus->add_option("--repeats", args->config.repeats, "best of N per throughput measurement");
+  bus->callback([args, &result] { result = run_bus_bench(*args); });
+}
+
+}  // namespace chatsim::cli

@@ -1,0 +1,12 @@
+#pragma once
+// The `chatsim` command's sub-commands, each registering itself on the CLI11 app and
+// returning its exit code through the callback's result.
+#include <CLI/CLI.hpp>
+
+namespace chatsim::cli {
+
+// Each adds a sub-command; `result` receives the exit code when it runs.
+void add_launch_command(CLI::App& app, int& result);
+void add_bench_command(CLI::App& app, int& result);
+
+}  // namespace chatsim::cli

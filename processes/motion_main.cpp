@@ -1,0 +1,4 @@
+// chatsim-motion: the motion agent on the bus. Its logic lives in agents/; this only wires it.
+#include "processes/agent_process.hpp"
+
+int main(int argc, char** argv) { return chatsim::processes::agent_main(argc, argv, "motion"); }

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian (bookworm) packages ChatSim builds and tests with.
+# Idempotent: prints nothing and changes nothing when every package is already there.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config ninja-build
+  libzmq3-dev cppzmq-dev
+  flatbuffers-compiler libflatbuffers-dev
+  libeigen3-dev libopencv-dev libopenimageio-dev libopenexr-dev libembree-dev
+  libcurl4-openssl-dev googletest libgtest-dev libgmock-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libcpp-httplib-dev
+  libtinygltf-dev libzstd-dev
+  # OpenImageIO's and Imath's CMake files reference these: find_package fails without them.
+  openimageio-tools python3-imath
+  procps psmisc
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${#missing[@]} package(s): ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done" >&2
