@@ -233,9 +233,10 @@ CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fb
     return result;
   }
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) break;
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) break;
+    // Rounded up: never give up before the deadline the request carries.
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - now);
     auto m = receive(std::min(left, std::chrono::milliseconds(100)));
     if (!m) continue;
     if (m->topic() == reply_topic_) {

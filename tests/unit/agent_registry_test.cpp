@@ -1,0 +1,24 @@
+#include <gtest/gtest.h>
+
+#include "agents/core/agent_registry.hpp"
+
+using namespace chatsim::agents;
+
+TEST(AgentRegistry, HasTheSevenAgentsOfTheDesign) {
+  std::vector<std::string> kinds;
+  for (const auto& k : agent_kinds()) kinds.push_back(k.kind);
+  EXPECT_EQ(kinds, (std::vector<std::string>{"manager", "view", "background", "deletion", "asset",
+                                             "motion", "foreground"}));
+  EXPECT_THROW(make_agent("painter"), std::invalid_argument);
+}
+
+// Until an agent's capability lands, it says so instead of inventing a result.
+TEST(AgentRegistry, MissingCapabilitiesAnswerNotImplemented) {
+  for (const auto& k : agent_kinds()) {
+    auto agent = make_agent(k.kind);
+    const auto out = agent->handle({"decide", "scene", nlohmann::json::object()});
+    EXPECT_FALSE(out.ok) << k.kind;
+    EXPECT_EQ(out.error, ErrorKind::NotImplemented) << k.kind;
+    EXPECT_NE(out.message.find("issue"), std::string::npos) << out.message;
+  }
+}
