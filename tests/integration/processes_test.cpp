@@ -1,0 +1,151 @@
+// Real agent processes on a loopback bus: flags, readiness, answers, clean and fast exit.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/bus/topics.hpp"
+#include "common/util/clock.hpp"
+#include "tests/support/bus_fixture.hpp"
+#include "tests/support/subprocess.hpp"
+
+using namespace chatsim;
+using namespace std::chrono_literals;
+using test_support::bin;
+using test_support::ScopedProcess;
+
+namespace {
+
+const std::vector<std::string> kProcesses = {"chatsim-manager", "chatsim-view", "chatsim-background",
+                                             "chatsim-deletion", "chatsim-asset", "chatsim-motion",
+                                             "chatsim-foreground", "chatsim-bus", "chatsim-mock", "chatsim"};
+
+bool wait_heartbeat(bus::Node& node, const std::string& name, std::chrono::milliseconds t,
+                    std::map<std::string, int>& seen) {
+  const auto end = std::chrono::steady_clock::now() + t;
+  while (seen.count(name) == 0 && std::chrono::steady_clock::now() < end) node.spin_once(10ms);
+  return seen.count(name) != 0;
+}
+
+}  // namespace
+
+TEST(Processes, EveryProcessHasHelp) {
+  for (const auto& p : kProcesses) {
+    ScopedProcess proc(test_support::spawn({bin(p), "--help"}, "/dev/null"));
+    const auto status = proc.wait(5s);
+    ASSERT_TRUE(status) << p;
+    EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << p;
+  }
+}
+
+TEST(Processes, BadFlagsExitWithUsageCode) {
+  ScopedProcess proc(test_support::spawn({bin("chatsim-motion"), "--no-such-flag"}, "/dev/null"));
+  const auto status = proc.wait(5s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 2);
+}
+
+TEST(Processes, NoBusIsExitCode3) {
+  ScopedProcess proc(test_support::spawn(
+      {bin("chatsim-view"), "--bus", "tcp://127.0.0.1:1", "--handshake-timeout-ms", "300"}, "/dev/null"));
+  const auto status = proc.wait(5s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 3);
+}
+
+// Each agent beats, answers requests with an explicit NotImplemented error, and exits
+// cleanly within 1 s of SIGTERM and of SIGINT.
+TEST(Processes, AgentsAnswerNotImplementedAndStopWithinOneSecond) {
+  test_support::InProcessBus b;
+  bus::Node client(b.options("client"), b.context());
+  std::map<std::string, int> seen;
+  client.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
+    const auto* hb = m.payload<msgs::Heartbeat>();
+    seen[std::string(bus::view(hb->node()))] = hb->pid();
+  });
+  client.start();
+  int signal_index = 0;
+  for (const std::string kind : {"view", "background", "deletion", "asset", "motion", "foreground"}) {
+    ScopedProcess proc(test_support::spawn({bin("chatsim-" + kind), "--bus", b.endpoint()}, "/dev/null"));
+    ASSERT_TRUE(wait_heartbeat(client, kind, 5s, seen)) << kind;
+    EXPECT_EQ(seen[kind], proc.pid);
+
+    flatbuffers::FlatBufferBuilder fbb;
+    auto req = msgs::CreateAgentRequestDirect(fbb, kind.c_str(), "decide", "", "{}");
+    auto r = client.call(bus::topics::agent_request(kind), fbb, msgs::Payload::AgentRequest, req.Union(), 3s);
+    ASSERT_TRUE(r.ok()) << kind << ": " << r.error_message;
+    const auto* resp = r.response->payload<msgs::AgentResponse>();
+    ASSERT_NE(resp, nullptr);
+    EXPECT_FALSE(resp->ok());
+    ASSERT_NE(resp->error(), nullptr);
+    EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::NotImplemented) << kind;
+    EXPECT_EQ(bus::view(resp->error()->node()), kind);
+
+    const double t0 = mono_s();
+    kill(proc.pid, (signal_index++ % 2) ? SIGINT : SIGTERM);
+    const auto status = proc.wait(2s);
+    ASSERT_TRUE(status) << kind << " did not exit";
+    EXPECT_LT(mono_s() - t0, 1.0) << kind;
+    EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << kind;
+  }
+}
+
+TEST(Processes, ManagerAnswersChatRequestsWithoutFakingAResult) {
+  test_support::InProcessBus b;
+  ScopedProcess proc(test_support::spawn({bin("chatsim-manager"), "--bus", b.endpoint()}, "/dev/null"));
+  bus::Node client(b.options("client"), b.context());
+  std::map<std::string, int> seen;
+  client.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
+    seen[std::string(bus::view(m.payload<msgs::Heartbeat>()->node()))] = 1;
+  });
+  client.start();
+  ASSERT_TRUE(wait_heartbeat(client, "manager", 5s, seen));
+  flatbuffers::FlatBufferBuilder fbb;
+  auto req = msgs::CreateChatRequestDirect(fbb, "c1", "scene", "remove all cars");
+  auto r = client.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(), 5s);
+  ASSERT_TRUE(r.ok()) << r.error_message;
+  const auto* resp = r.response->payload<msgs::ChatResponse>();
+  ASSERT_NE(resp, nullptr);
+  EXPECT_FALSE(resp->ok());
+  EXPECT_EQ(bus::view(resp->conversation_id()), "c1");
+  EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::NotImplemented);
+}
+
+TEST(Processes, MockAnswersFromItsScript) {
+  test_support::InProcessBus b;
+  const std::string script = std::string(CHATSIM_SOURCE_DIR) + "/launch/mocks/motion.yaml";
+  ScopedProcess proc(test_support::spawn(
+      {bin("chatsim-mock"), "--script", script, "--name", "motion-mock", "--bus", b.endpoint()}, "/dev/null"));
+  bus::Node client(b.options("client"), b.context());
+  std::map<std::string, int> seen;
+  client.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
+    seen[std::string(bus::view(m.payload<msgs::Heartbeat>()->node()))] = 1;
+  });
+  client.start();
+  ASSERT_TRUE(wait_heartbeat(client, "motion-mock", 5s, seen));
+  flatbuffers::FlatBufferBuilder fbb;
+  auto req = msgs::CreateAgentRequestDirect(fbb, "motion", "plan", "", R"({"asset":"porsche"})");
+  const double t0 = mono_s();
+  auto r = client.call(bus::topics::agent_request("motion"), fbb, msgs::Payload::AgentRequest, req.Union(), 3s);
+  ASSERT_TRUE(r.ok()) << r.error_message;
+  EXPECT_GE(mono_s() - t0, 0.05);  // the script's delay_ms
+  const auto* resp = r.response->payload<msgs::AgentResponse>();
+  ASSERT_TRUE(resp->ok());
+  const auto result = nlohmann::json::parse(bus::view(resp->result_json()));
+  EXPECT_DOUBLE_EQ(result["trajectory"][0]["x"].get<double>(), 12.0);
+}
+
+TEST(Processes, MockRefusesABadScriptNamingIt) {
+  const auto path = std::filesystem::temp_directory_path() / "chatsim-bad-mock.yaml";
+  std::ofstream(path) << "agent: motion\nresponses:\n  - reslt: {}\n";
+  const std::string log = path.string() + ".log";
+  ScopedProcess proc(test_support::spawn({bin("chatsim-mock"), "--script", path.string()}, log));
+  const auto status = proc.wait(5s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 2);
+  std::ifstream in(log);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("chatsim-bad-mock.yaml:3:5"), std::string::npos) << text;
+}

@@ -1,0 +1,66 @@
+#pragma once
+// Starting and ending real processes from tests.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace chatsim::test_support {
+
+inline std::string bin(const std::string& name) { return std::string(CHATSIM_BIN_DIR) + "/" + name; }
+
+// fork/exec with stdout/stderr to `log` (or inherited when empty).
+inline pid_t spawn(const std::vector<std::string>& args, const std::string& log = "") {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (!log.empty()) {
+      FILE* f = std::fopen(log.c_str(), "w");
+      if (f != nullptr) {
+        dup2(fileno(f), 1);
+        dup2(fileno(f), 2);
+      }
+    }
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+// Exit status (as from waitpid) if pid ended within timeout.
+inline std::optional<int> wait_for(pid_t pid, std::chrono::milliseconds timeout) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) return status;
+    if (std::chrono::steady_clock::now() > end) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+// Ends pid for sure (tests always clean up).
+inline void kill_and_reap(pid_t pid) {
+  if (pid <= 0) return;
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+}
+
+struct ScopedProcess {
+  pid_t pid = -1;
+  explicit ScopedProcess(pid_t p) : pid(p) {}
+  ~ScopedProcess() { kill_and_reap(pid); }
+  std::optional<int> wait(std::chrono::milliseconds t) {
+    auto s = wait_for(pid, t);
+    if (s) pid = -1;
+    return s;
+  }
+};
+
+}  // namespace chatsim::test_support
