@@ -37,9 +37,19 @@ double percentile(std::vector<double> v, double p) {
 
 // Flow control shared by both sides: the sender keeps at most `window` messages in flight,
 // so neither path drops at its high-water mark and both are measured at their real pace.
+// The sender blocks (futex, not a spin) so it leaves the cores to the path being measured.
 struct Flow {
   std::atomic<long> received{0};
-  std::atomic<bool> done{false};
+  void arrived(long n) {
+    received.store(n, std::memory_order_release);
+    received.notify_one();
+  }
+  void wait_window(long sent, long window) {
+    for (long r = received.load(std::memory_order_acquire); sent - r >= window;
+         r = received.load(std::memory_order_acquire)) {
+      received.wait(r, std::memory_order_acquire);
+    }
+  }
 };
 
 // ---- raw ZeroMQ ----------------------------------------------------------------------
@@ -81,12 +91,12 @@ Rate raw_stream(const std::string& host, int size, int count, long window) {
     for (long i = 0; i < count; ++i) {
       (void)p.sub.recv(m, zmq::recv_flags::none);
       rate.bytes += m.size();
-      flow.received.store(i + 1, std::memory_order_release);
+      flow.arrived(i + 1);
     }
   });
   const double t0 = mono_s();
   for (long i = 0; i < count; ++i) {
-    while (i - flow.received.load(std::memory_order_acquire) >= window) std::this_thread::yield();
+    flow.wait_window(i, window);
     zmq::message_t m(size);
     std::memcpy(m.data(), payload.data(), size);  // the producer fills its message
     p.pub.send(m, zmq::send_flags::none);
@@ -128,7 +138,7 @@ std::vector<double> raw_latency(const std::string& host, int size, int count) {
 // ---- through the bus -----------------------------------------------------------------
 
 struct BusHarness {
-  std::shared_ptr<zmq::context_t> ctx = std::make_shared<zmq::context_t>(2);
+  std::shared_ptr<zmq::context_t> ctx = std::make_shared<zmq::context_t>(1);
   std::unique_ptr<bus::Proxy> proxy;
   std::atomic<bool> stop{false};
   std::thread forwarding;
@@ -170,7 +180,7 @@ Rate bus_stream(const std::string& host, int size, int count, long window) {
     long n = 0;
     sub.subscribe("/bench/stream", [&](const bus::Message& m) {
       rate.bytes += m.payload<msgs::Image>()->data()->size();
-      flow.received.store(++n, std::memory_order_release);
+      flow.arrived(++n);
     });
     sub.start();
     subscribed.store(true);
@@ -185,7 +195,7 @@ Rate bus_stream(const std::string& host, int size, int count, long window) {
   const std::vector<uint8_t> payload(size, 0x5a);
   const double t0 = mono_s();
   for (long i = 0; i < count; ++i) {
-    while (i - flow.received.load(std::memory_order_acquire) >= window) std::this_thread::yield();
+    flow.wait_window(i, window);
     publish_payload(pub, "/bench/stream", payload);
   }
   receiver.join();

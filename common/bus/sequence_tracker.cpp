@@ -5,14 +5,16 @@ namespace chatsim::bus {
 SequenceTracker::Observation SequenceTracker::observe(std::string_view sender,
                                                       uint64_t sender_instance,
                                                       std::string_view topic, uint64_t seq) {
-  std::string key;
-  key.reserve(sender.size() + topic.size() + 1);
-  key.append(sender).push_back('\0');
-  key.append(topic);
+  key_.clear();  // reused: no allocation per message once streams are known
+  key_.append(sender).push_back('\0');
+  key_.append(topic);
 
   Observation obs;
-  auto [it, inserted] = streams_.try_emplace(std::move(key), Stream{sender_instance, seq});
-  if (inserted) return obs;  // first message seen: nothing to compare with (late joiner)
+  auto it = streams_.find(key_);
+  if (it == streams_.end()) {  // first message seen: nothing to compare with (late joiner)
+    streams_.emplace(key_, Stream{sender_instance, seq});
+    return obs;
+  }
   Stream& s = it->second;
   if (s.instance != sender_instance) {
     obs.restarted = true;

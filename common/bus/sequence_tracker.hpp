@@ -29,6 +29,7 @@ class SequenceTracker {
     uint64_t last_seq = 0;
   };
   std::unordered_map<std::string, Stream> streams_;
+  std::string key_;
   uint64_t gaps_ = 0;
   uint64_t duplicates_ = 0;
   uint64_t restarts_ = 0;
