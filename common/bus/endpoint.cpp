@@ -41,6 +41,10 @@ std::string tcp_bus_endpoint(const std::string& host, int publish_port) {
   return "tcp://" + host + ":" + std::to_string(publish_port);
 }
 
+bool asks_for_os_chosen_port(const std::string& bus) {
+  return bus.rfind("tcp://", 0) == 0 && bus.size() > 2 && bus.compare(bus.size() - 2, 2, ":0") == 0;
+}
+
 std::string default_bus_endpoint() {
   if (const char* env = std::getenv("CHATSIM_BUS"); env != nullptr && *env != '\0') return env;
   return "tcp://127.0.0.1:7700";

@@ -18,6 +18,9 @@ BusEndpoints split_bus_endpoint(const std::string& bus);
 // Inverse of split_bus_endpoint for TCP: "tcp://HOST:PORT" from the publisher port.
 std::string tcp_bus_endpoint(const std::string& host, int publish_port);
 
+// True for tcp://HOST:0: only chatsim-bus may be given it; it picks the real ports.
+bool asks_for_os_chosen_port(const std::string& bus);
+
 // $CHATSIM_BUS if set, else tcp://127.0.0.1:7700.
 std::string default_bus_endpoint();
 

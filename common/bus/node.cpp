@@ -43,6 +43,29 @@ zmq::message_t take_buffer(flatbuffers::FlatBufferBuilder& fbb) {
       [](void*, void* hint) { delete static_cast<flatbuffers::DetachedBuffer*>(hint); }, detached);
 }
 
+flatbuffers::Offset<flatbuffers::String> optional_string(flatbuffers::FlatBufferBuilder& fbb,
+                                                         const std::string& s) {
+  return s.empty() ? flatbuffers::Offset<flatbuffers::String>() : fbb.CreateString(s);
+}
+
+// Wraps payload in an Envelope with its header and sends it as [topic, body] without copying
+// the body. Shared by publish() and the heartbeat thread (each with its own socket).
+bool send_envelope(zmq::socket_t& socket, std::string_view topic, std::string_view sender,
+                   uint64_t instance, uint64_t seq, flatbuffers::FlatBufferBuilder& fbb,
+                   msgs::Payload type, flatbuffers::Offset<void> payload,
+                   const PublishOptions& options) {
+  auto header = msgs::CreateHeader(fbb, fbb.CreateString(topic), fbb.CreateString(sender), instance,
+                                   seq, now_ns(), optional_string(fbb, options.correlation_id),
+                                   optional_string(fbb, options.reply_to), options.deadline_ns);
+  msgs::FinishEnvelopeBuffer(fbb, msgs::CreateEnvelope(fbb, header, type, payload));
+  zmq::message_t topic_frame(topic.data(), topic.size());
+  zmq::message_t body = take_buffer(fbb);
+  if (!socket.send(topic_frame, zmq::send_flags::sndmore | zmq::send_flags::dontwait)) return false;
+  // Once the first frame is queued the second always is: ZeroMQ queues multipart atomically.
+  socket.send(body, zmq::send_flags::none);
+  return true;
+}
+
 }  // namespace
 
 Node::Node(NodeOptions options, std::shared_ptr<zmq::context_t> context)
@@ -117,21 +140,10 @@ PublishStatus Node::publish(std::string_view topic, flatbuffers::FlatBufferBuild
                             msgs::Payload type, flatbuffers::Offset<void> payload,
                             const PublishOptions& options) {
   if (!started_ || shut_down_) throw BusError("node '" + options_.name + "' is not running");
-  auto header = msgs::CreateHeader(
-      fbb, fbb.CreateString(topic), fbb.CreateString(options_.name), instance_, next_seq(topic),
-      now_ns(), options.correlation_id.empty() ? flatbuffers::Offset<flatbuffers::String>()
-                                      : fbb.CreateString(options.correlation_id),
-      options.reply_to.empty() ? flatbuffers::Offset<flatbuffers::String>()
-                                : fbb.CreateString(options.reply_to), options.deadline_ns);
-  msgs::FinishEnvelopeBuffer(fbb, msgs::CreateEnvelope(fbb, header, type, payload));
-
-  zmq::message_t topic_frame(topic.data(), topic.size());
-  zmq::message_t body = take_buffer(fbb);
-  if (!pub_->send(topic_frame, zmq::send_flags::sndmore | zmq::send_flags::dontwait)) {
+  if (!send_envelope(*pub_, topic, options_.name, instance_, next_seq(topic), fbb, type, payload,
+                     options)) {
     return PublishStatus::WouldBlock;
   }
-  // Once the first frame is queued the second always is: ZeroMQ queues multipart atomically.
-  pub_->send(body, zmq::send_flags::none);
   stats_.sent.fetch_add(1, std::memory_order_relaxed);
   return PublishStatus::Sent;
 }
@@ -329,7 +341,6 @@ void Node::heartbeat_loop() {
   configure(pub, options_);
   pub.connect(split_bus_endpoint(options_.bus).publish);
   const std::string host = host_name();
-  const std::string topic(topics::kHeartbeat);
   uint64_t seq = 0;
   auto beat = [&](msgs::NodeState state) {
     flatbuffers::FlatBufferBuilder fbb(256);
@@ -338,15 +349,8 @@ void Node::heartbeat_loop() {
         static_cast<int32_t>(getpid()), fbb.CreateString(host), state, mono_s() - start_mono_s_,
         static_cast<uint32_t>(options_.heartbeat_period.count()), stats_.received.load(),
         stats_.invalid.load(), stats_.gaps.load());
-    auto header = msgs::CreateHeader(fbb, fbb.CreateString(topic), fbb.CreateString(options_.name),
-                                     instance_, ++seq, now_ns());
-    msgs::FinishEnvelopeBuffer(
-        fbb, msgs::CreateEnvelope(fbb, header, msgs::Payload::Heartbeat, hb.Union()));
-    zmq::message_t topic_frame(topic.data(), topic.size());
-    zmq::message_t body = take_buffer(fbb);
-    if (pub.send(topic_frame, zmq::send_flags::sndmore | zmq::send_flags::dontwait)) {
-      pub.send(body, zmq::send_flags::none);
-    }
+    send_envelope(pub, topics::kHeartbeat, options_.name, instance_, ++seq, fbb,
+                  msgs::Payload::Heartbeat, hb.Union(), {});
   };
   // The first few beats come quickly: this socket is new and the first may be lost while it
   // connects, and launchers wait for a beat before starting the next process.

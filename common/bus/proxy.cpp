@@ -41,11 +41,10 @@ std::optional<size_t> forward(zmq::socket_t& from, zmq::socket_t& to) {
 
 Proxy::Proxy(std::shared_ptr<zmq::context_t> context, const std::string& bus, int hwm)
     : context_(std::move(context)) {
-  const auto scheme_end = bus.find("://");
-  const bool tcp = bus.rfind("tcp://", 0) == 0;
-  if (tcp && bus.size() > 2 && bus.substr(bus.size() - 2) == ":0") {
+  if (asks_for_os_chosen_port(bus)) {
     // OS-chosen ports: take the XSUB port the OS gives, try the next one for XPUB.
-    const std::string host = bus.substr(scheme_end + 3, bus.size() - scheme_end - 3 - 2);
+    const std::string host = bus.substr(6, bus.size() - 6 - 2);  // between "tcp://" and ":0"
+
     for (int attempt = 0; attempt < 50 && endpoint_.empty(); ++attempt) {
       xsub_ = make_socket(*context_, zmq::socket_type::xsub, hwm);
       xsub_->bind("tcp://" + host + ":0");

@@ -25,10 +25,6 @@ bool is_local(const std::string& host) {
   return host.empty() || host == "localhost" || host == "127.0.0.1";
 }
 
-bool ends_with_port_zero(const std::string& bus) {
-  return bus.rfind("tcp://", 0) == 0 && bus.size() > 2 && bus.substr(bus.size() - 2) == ":0";
-}
-
 std::string shell_quote(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
@@ -51,7 +47,7 @@ Launcher::Launcher(LaunchFile file, LauncherOptions options)
   }
   const bool has_bus = std::any_of(file_.processes.begin(), file_.processes.end(),
                                    [](const ProcessSpec& p) { return p.kind == "bus"; });
-  if (ends_with_port_zero(bus_) && !has_bus) {
+  if (bus::asks_for_os_chosen_port(bus_) && !has_bus) {
     throw LaunchFileError(file_.path.string() + ": bus " + bus_ +
                           " asks for an OS-chosen port, but no process has kind 'bus' to choose it");
   }
@@ -236,7 +232,7 @@ bool Launcher::wait_ready(Child& child, const std::atomic<bool>& stop) {
 bool Launcher::start_in_order(const std::atomic<bool>& stop) {
   for (auto& child : children_) {
     if (stop.load()) return false;
-    const bool choose_port = child.spec->kind == "bus" && ends_with_port_zero(bus_);
+    const bool choose_port = child.spec->kind == "bus" && bus::asks_for_os_chosen_port(bus_);
     if (choose_port) {
       char tmpl[] = "/tmp/chatsim-bus-endpoint-XXXXXX";
       const int fd = mkstemp(tmpl);

@@ -5,7 +5,4 @@ inline constexpr int kOk = 0;
 inline constexpr int kFailure = 1;         // the work failed (see the message)
 inline constexpr int kUsage = 2;           // bad arguments or bad input file
 inline constexpr int kBusUnavailable = 3;  // no bus proxy answered
-inline constexpr int kNotImplemented = 4;  // the capability asked for does not exist yet
-inline constexpr int kTimeout = 5;         // a deadline passed without an answer
-inline constexpr int kInterrupted = 130;   // stopped by SIGINT before finishing
 }  // namespace chatsim::exit_code

@@ -23,7 +23,7 @@ int run_bus_bench(BusBenchArgs a) {
     a.config.repeats = 1;
   }
   std::cerr << "bench bus: raw ZeroMQ PUB/SUB vs the bus, tcp loopback (takes ~"
-            << (a.quick ? "5" : "30") << " s)..." << std::endl;
+            << (a.quick ? "2" : "10") << " s on 2 cores)..." << std::endl;
   const auto report = bench::run_bus_bench(a.config);
   const auto& r = report["ratios"];
   const auto& t = report["targets"];

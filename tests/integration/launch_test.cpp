@@ -9,24 +9,17 @@
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
 #include "common/launch/process_tree.hpp"
+#include "tests/support/heartbeat_watcher.hpp"
 #include "tests/support/subprocess.hpp"
 
 using namespace chatsim;
 using namespace std::chrono_literals;
 using test_support::bin;
+using test_support::read_file;
 using test_support::ScopedProcess;
+using test_support::temp_path;
 
 namespace {
-
-std::filesystem::path temp_path(const std::string& name) {
-  return std::filesystem::temp_directory_path() /
-         ("chatsim-test-" + std::to_string(getpid()) + "-" + name);
-}
-
-std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
 
 std::string wait_endpoint(const std::filesystem::path& file, std::chrono::milliseconds t) {
   const auto end = std::chrono::steady_clock::now() + t;
@@ -39,57 +32,68 @@ std::string wait_endpoint(const std::filesystem::path& file, std::chrono::millis
   return "";
 }
 
-// Watches heartbeats on a launched bus: node name -> latest pid.
-struct Watcher {
+// A `chatsim launch` run whose bus endpoint the test reads back, watched through a node of ours.
+struct LaunchedGraph {
+  std::filesystem::path log;
+  ScopedProcess launcher;
+  std::string endpoint;
   std::unique_ptr<bus::Node> node;
-  std::map<std::string, int> pids;
-  explicit Watcher(const std::string& endpoint) {
+  std::unique_ptr<test_support::HeartbeatWatcher> watcher;
+
+  LaunchedGraph(const std::string& tag, std::vector<std::string> args)
+      : log(temp_path(tag + ".log")), launcher(start(tag, std::move(args), log)) {
+    endpoint = wait_endpoint(temp_path(tag + ".endpoint"), 10s);
+    if (endpoint.empty()) return;
     bus::NodeOptions o{"test-watcher", "test", endpoint};
     o.heartbeat_period = 0ms;
     node = std::make_unique<bus::Node>(o);
-    node->subscribe(std::string(bus::topics::kHeartbeat), [this](const bus::Message& m) {
-      const auto* hb = m.payload<msgs::Heartbeat>();
-      if (hb->state() != msgs::NodeState::Stopping) pids[std::string(bus::view(hb->node()))] = hb->pid();
-    });
+    watcher = std::make_unique<test_support::HeartbeatWatcher>(*node);
     node->start();
   }
-  template <class Pred>
-  bool until(Pred pred, std::chrono::milliseconds t) {
-    const auto end = std::chrono::steady_clock::now() + t;
-    while (!pred() && std::chrono::steady_clock::now() < end) node->spin_once(20ms);
-    return pred();
+
+  static pid_t start(const std::string& tag, std::vector<std::string> args,
+                     const std::filesystem::path& log) {
+    const auto ep_file = temp_path(tag + ".endpoint");
+    std::filesystem::remove(ep_file);
+    args.insert(args.begin(), {bin("chatsim"), "launch"});
+    args.insert(args.end(), {"--endpoint-file", ep_file.string()});
+    return test_support::spawn(args, log.string());
   }
 };
+
+// Runs `chatsim launch FILE` to its end; returns (exit status, what it printed).
+std::pair<std::optional<int>, std::string> launch_to_exit(const std::string& tag, const std::string& yaml) {
+  const auto file = temp_path(tag + ".yaml");
+  std::ofstream(file) << yaml;
+  const auto log = temp_path(tag + ".log");
+  ScopedProcess launcher(test_support::spawn({bin("chatsim"), "launch", file.string()}, log.string()));
+  const auto status = launcher.wait(5s);
+  return {status, read_file(log)};
+}
 
 }  // namespace
 
 TEST(Launch, LocalYamlBringsUpEveryProcessAndCtrlCLeavesNoneBehind) {
-  const auto ep_file = temp_path("ep1");
-  std::filesystem::remove(ep_file);
-  ScopedProcess launcher(test_support::spawn(
-      {bin("chatsim"), "launch", std::string(CHATSIM_SOURCE_DIR) + "/launch/local.yaml", "--bus",
-       "tcp://127.0.0.1:0", "--endpoint-file", ep_file.string()},
-      temp_path("launch1.log").string()));
-  const std::string endpoint = wait_endpoint(ep_file, 10s);
-  ASSERT_FALSE(endpoint.empty()) << read_file(temp_path("launch1.log"));
-  Watcher w(endpoint);
+  LaunchedGraph g("local", {std::string(CHATSIM_SOURCE_DIR) + "/launch/local.yaml", "--bus",
+                            "tcp://127.0.0.1:0"});
+  ASSERT_FALSE(g.endpoint.empty()) << read_file(g.log);
   const std::set<std::string> expected = {"bus", "manager", "view", "background", "deletion",
                                           "asset", "motion", "foreground"};
-  ASSERT_TRUE(w.until([&] {
+  ASSERT_TRUE(g.watcher->until([&] {
     for (const auto& n : expected) {
-      if (!w.pids.count(n)) return false;
+      if (!g.watcher->pids.count(n)) return false;
     }
     return true;
-  }, 15s)) << read_file(temp_path("launch1.log"));
-  const auto descendants = launch::descendants_of(launcher.pid);
+  }, 15s)) << read_file(g.log);
+  const auto descendants = launch::descendants_of(g.launcher.pid);
   EXPECT_GE(descendants.size(), expected.size());
-  w.node->shutdown();
+  g.node->shutdown();
 
-  kill(launcher.pid, SIGINT);
-  const auto status = launcher.wait(10s);
+  kill(g.launcher.pid, SIGINT);
+  const auto status = g.launcher.wait(10s);
   ASSERT_TRUE(status) << "launcher did not stop";
   EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0);
-  for (const auto& [name, pid] : w.pids) EXPECT_FALSE(launch::process_alive(pid)) << name << " left running";
+  for (const auto& [name, pid] : g.watcher->pids) EXPECT_FALSE(launch::process_alive(pid)) << name << " left running";
   for (pid_t p : descendants) EXPECT_FALSE(launch::process_alive(p)) << "pid " << p << " left running";
 }
 
@@ -115,6 +119,30 @@ TEST(Launch, GrandchildrenThatLeftTheProcessGroupAreStoppedToo) {
   for (pid_t p : tree) EXPECT_FALSE(launch::process_alive(p)) << "pid " << p << " left running";
 }
 
+TEST(Launch, ChildrenEndWhenTheLauncherIsKilled) {
+  const auto file = temp_path("orphans.yaml");
+  std::ofstream(file) << "bus: tcp://127.0.0.1:0\n"
+                         "processes:\n"
+                         "  - {name: bus, kind: bus, executable: chatsim-bus}\n"
+                         "  - {name: view, executable: chatsim-view}\n";
+  LaunchedGraph g("orphans", {file.string()});
+  ASSERT_FALSE(g.endpoint.empty()) << read_file(g.log);
+  ASSERT_TRUE(g.watcher->wait_for("view", 10s));
+  const auto children = launch::children_of(g.launcher.pid);
+  ASSERT_EQ(children.size(), 2u);
+  g.node->shutdown();
+  kill(g.launcher.pid, SIGKILL);  // no chance to clean up: the children's death signal must
+  ASSERT_TRUE(g.launcher.wait(5s));
+  for (pid_t p : children) {
+    bool ended = false;
+    for (int i = 0; i < 100 && !ended; ++i) {
+      ended = !launch::process_alive(p);
+      std::this_thread::sleep_for(20ms);
+    }
+    EXPECT_TRUE(ended) << "pid " << p << " outlived its launcher";
+  }
+}
+
 TEST(Launch, RespawnsAKilledAgentAndSwapsMocksIn) {
   const auto file = temp_path("respawn.yaml");
   std::ofstream(file) << "bus: tcp://127.0.0.1:0\n"
@@ -122,53 +150,41 @@ TEST(Launch, RespawnsAKilledAgentAndSwapsMocksIn) {
                          "  - {name: bus, kind: bus, executable: chatsim-bus}\n"
                          "  - {name: view, executable: chatsim-view, respawn: on-failure, respawn_delay_s: 0.1}\n"
                          "  - {name: motion, executable: chatsim-motion}\n";
-  const auto ep_file = temp_path("ep2");
-  std::filesystem::remove(ep_file);
-  ScopedProcess launcher(test_support::spawn(
-      {bin("chatsim"), "launch", file.string(), "--endpoint-file", ep_file.string(), "--mock",
-       "motion=" + std::string(CHATSIM_SOURCE_DIR) + "/launch/mocks/motion.yaml"},
-      temp_path("launch3.log").string()));
-  const std::string endpoint = wait_endpoint(ep_file, 10s);
-  ASSERT_FALSE(endpoint.empty()) << read_file(temp_path("launch3.log"));
-  Watcher w(endpoint);
-  ASSERT_TRUE(w.until([&] { return w.pids.count("view") && w.pids.count("motion"); }, 10s));
+  LaunchedGraph g("respawn", {file.string(), "--mock",
+                              "motion=" + std::string(CHATSIM_SOURCE_DIR) + "/launch/mocks/motion.yaml"});
+  ASSERT_FALSE(g.endpoint.empty()) << read_file(g.log);
+  auto& pids = g.watcher->pids;
+  ASSERT_TRUE(g.watcher->until([&] { return pids.count("view") && pids.count("motion"); }, 10s));
 
   // The mock answers in the motion agent's place.
   flatbuffers::FlatBufferBuilder fbb;
   auto req = msgs::CreateAgentRequestDirect(fbb, "motion", "plan", "", "{}");
-  auto r = w.node->call(bus::topics::agent_request("motion"), fbb, msgs::Payload::AgentRequest, req.Union(), 3s);
+  auto r = g.node->call(bus::topics::agent_request("motion"), fbb, msgs::Payload::AgentRequest, req.Union(), 3s);
   ASSERT_TRUE(r.ok()) << r.error_message;
   EXPECT_TRUE(r.response->payload<msgs::AgentResponse>()->ok());
 
-  const int first = w.pids["view"];
+  const int first = pids["view"];
   kill(first, SIGKILL);
-  EXPECT_TRUE(w.until([&] { return w.pids["view"] != first; }, 5s)) << read_file(temp_path("launch3.log"));
+  EXPECT_TRUE(g.watcher->until([&] { return pids["view"] != first; }, 5s)) << read_file(g.log);
   EXPECT_FALSE(launch::process_alive(first));
 
-  const int second = w.pids["view"];
-  kill(launcher.pid, SIGTERM);
-  ASSERT_TRUE(launcher.wait(10s));
+  const int second = pids["view"];
+  kill(g.launcher.pid, SIGTERM);
+  ASSERT_TRUE(g.launcher.wait(10s));
   EXPECT_FALSE(launch::process_alive(second));
 }
 
 TEST(Launch, BadLaunchFileIsRefusedWithFileAndLine) {
-  const auto file = temp_path("bad.yaml");
-  std::ofstream(file) << "processes:\n  - name: a\n    executable: x\n    respawn: maybe\n";
-  const auto log = temp_path("bad.log");
-  ScopedProcess launcher(test_support::spawn({bin("chatsim"), "launch", file.string()}, log.string()));
-  const auto status = launcher.wait(5s);
+  const auto [status, log] = launch_to_exit("bad", "processes:\n  - name: a\n    executable: x\n    respawn: maybe\n");
   ASSERT_TRUE(status);
   EXPECT_EQ(WEXITSTATUS(*status), 2);
-  EXPECT_NE(read_file(log).find(file.string() + ":4:14"), std::string::npos) << read_file(log);
+  EXPECT_NE(log.find(temp_path("bad.yaml").string() + ":4:14"), std::string::npos) << log;
 }
 
 TEST(Launch, MissingExecutableIsAClearFailure) {
-  const auto file = temp_path("missing.yaml");
-  std::ofstream(file) << "processes:\n  - {name: a, executable: chatsim-nonexistent, ready: none}\n";
-  const auto log = temp_path("missing.log");
-  ScopedProcess launcher(test_support::spawn({bin("chatsim"), "launch", file.string()}, log.string()));
-  const auto status = launcher.wait(5s);
+  const auto [status, log] = launch_to_exit(
+      "missing", "processes:\n  - {name: a, executable: chatsim-nonexistent, ready: none}\n");
   ASSERT_TRUE(status);
   EXPECT_NE(WEXITSTATUS(*status), 0);
-  EXPECT_NE(read_file(log).find("chatsim-nonexistent"), std::string::npos) << read_file(log);
+  EXPECT_NE(log.find("chatsim-nonexistent"), std::string::npos) << log;
 }

@@ -9,11 +9,13 @@
 #include "common/bus/topics.hpp"
 #include "common/util/clock.hpp"
 #include "tests/support/bus_fixture.hpp"
+#include "tests/support/heartbeat_watcher.hpp"
 #include "tests/support/subprocess.hpp"
 
 using namespace chatsim;
 using namespace std::chrono_literals;
 using test_support::bin;
+using test_support::HeartbeatWatcher;
 using test_support::ScopedProcess;
 
 namespace {
@@ -21,13 +23,6 @@ namespace {
 const std::vector<std::string> kProcesses = {"chatsim-manager", "chatsim-view", "chatsim-background",
                                              "chatsim-deletion", "chatsim-asset", "chatsim-motion",
                                              "chatsim-foreground", "chatsim-bus", "chatsim-mock", "chatsim"};
-
-bool wait_heartbeat(bus::Node& node, const std::string& name, std::chrono::milliseconds t,
-                    std::map<std::string, int>& seen) {
-  const auto end = std::chrono::steady_clock::now() + t;
-  while (seen.count(name) == 0 && std::chrono::steady_clock::now() < end) node.spin_once(10ms);
-  return seen.count(name) != 0;
-}
 
 }  // namespace
 
@@ -60,17 +55,13 @@ TEST(Processes, NoBusIsExitCode3) {
 TEST(Processes, AgentsAnswerNotImplementedAndStopWithinOneSecond) {
   test_support::InProcessBus b;
   bus::Node client(b.options("client"), b.context());
-  std::map<std::string, int> seen;
-  client.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
-    const auto* hb = m.payload<msgs::Heartbeat>();
-    seen[std::string(bus::view(hb->node()))] = hb->pid();
-  });
+  HeartbeatWatcher watcher(client);
   client.start();
   int signal_index = 0;
   for (const std::string kind : {"view", "background", "deletion", "asset", "motion", "foreground"}) {
     ScopedProcess proc(test_support::spawn({bin("chatsim-" + kind), "--bus", b.endpoint()}, "/dev/null"));
-    ASSERT_TRUE(wait_heartbeat(client, kind, 5s, seen)) << kind;
-    EXPECT_EQ(seen[kind], proc.pid);
+    ASSERT_TRUE(watcher.wait_for(kind, 5s)) << kind;
+    EXPECT_EQ(watcher.pids[kind], proc.pid);
 
     flatbuffers::FlatBufferBuilder fbb;
     auto req = msgs::CreateAgentRequestDirect(fbb, kind.c_str(), "decide", "", "{}");
@@ -96,12 +87,9 @@ TEST(Processes, ManagerAnswersChatRequestsWithoutFakingAResult) {
   test_support::InProcessBus b;
   ScopedProcess proc(test_support::spawn({bin("chatsim-manager"), "--bus", b.endpoint()}, "/dev/null"));
   bus::Node client(b.options("client"), b.context());
-  std::map<std::string, int> seen;
-  client.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
-    seen[std::string(bus::view(m.payload<msgs::Heartbeat>()->node()))] = 1;
-  });
+  HeartbeatWatcher watcher(client);
   client.start();
-  ASSERT_TRUE(wait_heartbeat(client, "manager", 5s, seen));
+  ASSERT_TRUE(watcher.wait_for("manager", 5s));
   flatbuffers::FlatBufferBuilder fbb;
   auto req = msgs::CreateChatRequestDirect(fbb, "c1", "scene", "remove all cars");
   auto r = client.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(), 5s);
@@ -119,12 +107,9 @@ TEST(Processes, MockAnswersFromItsScript) {
   ScopedProcess proc(test_support::spawn(
       {bin("chatsim-mock"), "--script", script, "--name", "motion-mock", "--bus", b.endpoint()}, "/dev/null"));
   bus::Node client(b.options("client"), b.context());
-  std::map<std::string, int> seen;
-  client.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
-    seen[std::string(bus::view(m.payload<msgs::Heartbeat>()->node()))] = 1;
-  });
+  HeartbeatWatcher watcher(client);
   client.start();
-  ASSERT_TRUE(wait_heartbeat(client, "motion-mock", 5s, seen));
+  ASSERT_TRUE(watcher.wait_for("motion-mock", 5s));
   flatbuffers::FlatBufferBuilder fbb;
   auto req = msgs::CreateAgentRequestDirect(fbb, "motion", "plan", "", R"({"asset":"porsche"})");
   const double t0 = mono_s();
@@ -138,14 +123,13 @@ TEST(Processes, MockAnswersFromItsScript) {
 }
 
 TEST(Processes, MockRefusesABadScriptNamingIt) {
-  const auto path = std::filesystem::temp_directory_path() / "chatsim-bad-mock.yaml";
+  const auto path = test_support::temp_path("bad-mock.yaml");
   std::ofstream(path) << "agent: motion\nresponses:\n  - reslt: {}\n";
   const std::string log = path.string() + ".log";
   ScopedProcess proc(test_support::spawn({bin("chatsim-mock"), "--script", path.string()}, log));
   const auto status = proc.wait(5s);
   ASSERT_TRUE(status);
   EXPECT_EQ(WEXITSTATUS(*status), 2);
-  std::ifstream in(log);
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_NE(text.find("chatsim-bad-mock.yaml:3:5"), std::string::npos) << text;
+  const std::string text = test_support::read_file(log);
+  EXPECT_NE(text.find("bad-mock.yaml:3:5"), std::string::npos) << text;
 }

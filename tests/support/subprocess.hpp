@@ -1,10 +1,14 @@
 #pragma once
 // Starting and ending real processes from tests.
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <thread>
@@ -14,6 +18,17 @@ namespace chatsim::test_support {
 
 inline std::string bin(const std::string& name) { return std::string(CHATSIM_BIN_DIR) + "/" + name; }
 
+// A per-test-process path in the temporary folder (ctest runs tests in parallel).
+inline std::filesystem::path temp_path(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("chatsim-test-" + std::to_string(getpid()) + "-" + name);
+}
+
+inline std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 // fork/exec with stdout/stderr to `log` (or inherited when empty).
 inline pid_t spawn(const std::vector<std::string>& args, const std::string& log = "") {
   std::vector<char*> argv;
@@ -21,11 +36,12 @@ inline pid_t spawn(const std::vector<std::string>& args, const std::string& log 
   argv.push_back(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
+    // Only async-signal-safe calls here: the test process has other threads (ZeroMQ's).
     if (!log.empty()) {
-      FILE* f = std::fopen(log.c_str(), "w");
-      if (f != nullptr) {
-        dup2(fileno(f), 1);
-        dup2(fileno(f), 2);
+      const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (fd >= 0) {
+        dup2(fd, 1);
+        dup2(fd, 2);
       }
     }
     execv(argv[0], argv.data());
