@@ -24,19 +24,60 @@ msgs::ErrorCode to_code(agents::ErrorKind kind) {
   return msgs::ErrorCode::Internal;
 }
 
-// Parses args_json; a malformed one is the caller's fault, said so.
-agents::AgentOutcome handle(agents::Agent& agent, const std::string& action,
-                            const std::string& scene, std::string_view args_json) {
-  agents::AgentCall call{action, scene, nlohmann::json::object()};
-  if (!args_json.empty()) {
-    try {
-      call.args = nlohmann::json::parse(args_json);
-    } catch (const nlohmann::json::parse_error& e) {
-      return agents::AgentOutcome::failure(agents::ErrorKind::BadRequest,
-                                           std::string("args_json is not valid JSON: ") + e.what());
-    }
+bus::Node::Reply wrong_payload(flatbuffers::FlatBufferBuilder& fbb, const std::string& node,
+                               const char* expected) {
+  return {msgs::Payload::Error,
+          bus::make_error(fbb, msgs::ErrorCode::BadRequest, std::string("expected ") + expected, node)
+              .Union()};
+}
+
+flatbuffers::Offset<msgs::Error> error_of(flatbuffers::FlatBufferBuilder& fbb,
+                                          const agents::AgentOutcome& out, const std::string& node) {
+  return out.ok ? flatbuffers::Offset<msgs::Error>()
+                : bus::make_error(fbb, to_code(out.error), out.message, node);
+}
+
+// /agent/<kind>/request: AgentRequest in, AgentResponse out. A malformed args_json is the
+// caller's fault, said so.
+bus::Node::Reply answer_agent_request(agents::Agent& agent, const std::string& node,
+                                      const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
+  const auto* req = request.payload<msgs::AgentRequest>();
+  if (req == nullptr) return wrong_payload(fbb, node, "an AgentRequest");
+  agents::AgentCall call{std::string(bus::view(req->action())), std::string(bus::view(req->scene())),
+                         nlohmann::json::object()};
+  agents::AgentOutcome out;
+  try {
+    if (!bus::view(req->args_json()).empty()) call.args = nlohmann::json::parse(bus::view(req->args_json()));
+    out = agent.handle(call);
+  } catch (const nlohmann::json::parse_error& e) {
+    out = agents::AgentOutcome::failure(agents::ErrorKind::BadRequest,
+                                        std::string("args_json is not valid JSON: ") + e.what());
   }
-  return agent.handle(call);
+  const auto error = error_of(fbb, out, node);
+  const auto resp = msgs::CreateAgentResponseDirect(fbb, agent.kind().c_str(), call.action.c_str(), out.ok,
+                                                    out.ok ? out.result.dump().c_str() : nullptr, error);
+  return {msgs::Payload::AgentResponse, resp.Union()};
+}
+
+// /chat/request (the manager only): ChatRequest in, ChatResponse out.
+bus::Node::Reply answer_chat_request(agents::Agent& agent, const std::string& node,
+                                     const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
+  const auto* req = request.payload<msgs::ChatRequest>();
+  if (req == nullptr) return wrong_payload(fbb, node, "a ChatRequest");
+  const std::string conversation(bus::view(req->conversation_id()));
+  const agents::AgentCall call{"chat", std::string(bus::view(req->scene())),
+                               {{"command", bus::view(req->command())},
+                                {"conversation_id", conversation},
+                                {"render", req->render()},
+                                {"output_dir", bus::view(req->output_dir())}}};
+  const auto out = agent.handle(call);
+  const auto error = error_of(fbb, out, node);
+  const std::string message = out.ok ? out.result.value("message", std::string()) : out.message;
+  const std::string edit = out.ok && out.result.contains("edit_state") ? out.result["edit_state"].dump() : "";
+  const std::string output_dir = out.ok ? out.result.value("output_dir", std::string()) : "";
+  const auto resp = msgs::CreateChatResponseDirect(fbb, conversation.c_str(), out.ok, message.c_str(),
+                                                   edit.c_str(), output_dir.c_str(), error);
+  return {msgs::Payload::ChatResponse, resp.Union()};
 }
 
 }  // namespace
@@ -76,47 +117,12 @@ int serve_agent(const AgentProcessOptions& options, std::unique_ptr<agents::Agen
     bus::Node node(no);
     node.serve(bus::topics::agent_request(no.kind),
                [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
-                 const auto* req = request.payload<msgs::AgentRequest>();
-                 if (req == nullptr) {
-                   return bus::Node::Reply{
-                       msgs::Payload::Error,
-                       bus::make_error(fbb, msgs::ErrorCode::BadRequest,
-                                       "expected an AgentRequest", no.name).Union()};
-                 }
-                 const std::string action(bus::view(req->action()));
-                 const auto out = handle(*agent, action, std::string(bus::view(req->scene())),
-                                         bus::view(req->args_json()));
-                 const auto error = out.ok ? flatbuffers::Offset<msgs::Error>()
-                                           : bus::make_error(fbb, to_code(out.error), out.message, no.name);
-                 const auto resp = msgs::CreateAgentResponseDirect(
-                     fbb, no.kind.c_str(), action.c_str(), out.ok,
-                     out.ok ? out.result.dump().c_str() : nullptr, error);
-                 return bus::Node::Reply{msgs::Payload::AgentResponse, resp.Union()};
+                 return answer_agent_request(*agent, no.name, request, fbb);
                });
     if (no.kind == "manager") {
       node.serve(std::string(bus::topics::kChatRequest),
                  [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
-                   const auto* req = request.payload<msgs::ChatRequest>();
-                   if (req == nullptr) {
-                     return bus::Node::Reply{
-                         msgs::Payload::Error,
-                         bus::make_error(fbb, msgs::ErrorCode::BadRequest, "expected a ChatRequest", no.name).Union()};
-                   }
-                   nlohmann::json args = {{"command", bus::view(req->command())},
-                                          {"conversation_id", bus::view(req->conversation_id())},
-                                          {"render", req->render()},
-                                          {"output_dir", bus::view(req->output_dir())}};
-                   const auto out = handle(*agent, "chat", std::string(bus::view(req->scene())), args.dump());
-                   const auto error = out.ok ? flatbuffers::Offset<msgs::Error>()
-                                             : bus::make_error(fbb, to_code(out.error), out.message, no.name);
-                   std::string message = out.ok ? out.result.value("message", std::string()) : out.message;
-                   std::string edit = out.ok && out.result.contains("edit_state") ? out.result["edit_state"].dump() : "";
-                   const std::string conversation(bus::view(req->conversation_id()));
-                   const auto resp = msgs::CreateChatResponseDirect(
-                       fbb, conversation.c_str(), out.ok, message.c_str(),
-                       edit.c_str(), out.ok ? out.result.value("output_dir", std::string()).c_str() : "",
-                       error);
-                   return bus::Node::Reply{msgs::Payload::ChatResponse, resp.Union()};
+                   return answer_chat_request(*agent, no.name, request, fbb);
                  });
     }
     node.start();

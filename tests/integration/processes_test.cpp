@@ -133,3 +133,24 @@ TEST(Processes, MockRefusesABadScriptNamingIt) {
   const std::string text = test_support::read_file(log);
   EXPECT_NE(text.find("bad-mock.yaml:3:5"), std::string::npos) << text;
 }
+
+TEST(Processes, MalformedArgumentsAreABadRequestNotACrash) {
+  test_support::InProcessBus b;
+  ScopedProcess proc(test_support::spawn({bin("chatsim-view"), "--bus", b.endpoint()}, "/dev/null"));
+  bus::Node client(b.options("client"), b.context());
+  HeartbeatWatcher watcher(client);
+  client.start();
+  ASSERT_TRUE(watcher.wait_for("view", 5s));
+  flatbuffers::FlatBufferBuilder fbb;
+  auto req = msgs::CreateAgentRequestDirect(fbb, "view", "decide", "", "{not json");
+  auto r = client.call(bus::topics::agent_request("view"), fbb, msgs::Payload::AgentRequest, req.Union(), 3s);
+  ASSERT_TRUE(r.ok()) << r.error_message;
+  const auto* resp = r.response->payload<msgs::AgentResponse>();
+  EXPECT_FALSE(resp->ok());
+  EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest);
+  EXPECT_NE(bus::view(resp->error()->message()).find("args_json"), std::string::npos);
+  kill(proc.pid, SIGTERM);
+  const auto status = proc.wait(2s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 0);
+}
