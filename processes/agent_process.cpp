@@ -104,10 +104,44 @@ int parse_or_exit(CLI::App& app, int argc, char** argv) {
   return -1;
 }
 
-int serve_agent(const AgentProcessOptions& options, std::unique_ptr<agents::Agent> agent) {
+agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout) {
+  return [&node, timeout](const std::string& kind, const agents::AgentCall& call) {
+    flatbuffers::FlatBufferBuilder fbb(1024);
+    const auto req = msgs::CreateAgentRequestDirect(fbb, kind.c_str(), call.action.c_str(), call.scene.c_str(),
+                                                    call.args.dump().c_str());
+    const auto result = node.call(bus::topics::agent_request(kind), fbb, msgs::Payload::AgentRequest, req.Union(), timeout);
+    if (!result.ok())
+      return agents::AgentOutcome::failure(agents::ErrorKind::Unavailable,
+                                           "the " + kind + " agent did not answer (" + result.error_message +
+                                               "); is chatsim-" + kind + " running on this bus?");
+    if (const auto* err = result.response->payload<msgs::Error>())
+      return agents::AgentOutcome::failure(agents::ErrorKind::Internal,
+                                           "the " + kind + " agent failed: " + std::string(bus::view(err->message())));
+    const auto* resp = result.response->payload<msgs::AgentResponse>();
+    if (resp == nullptr)
+      return agents::AgentOutcome::failure(agents::ErrorKind::Internal, "the " + kind + " agent sent no AgentResponse");
+    if (!resp->ok()) {
+      const std::string why = resp->error() != nullptr ? std::string(bus::view(resp->error()->message())) : "no reason given";
+      const auto code = resp->error() != nullptr ? resp->error()->code() : msgs::ErrorCode::Internal;
+      const auto kind_of = code == msgs::ErrorCode::BadRequest       ? agents::ErrorKind::BadRequest
+                           : code == msgs::ErrorCode::NotImplemented ? agents::ErrorKind::NotImplemented
+                           : code == msgs::ErrorCode::Unavailable    ? agents::ErrorKind::Unavailable
+                                                                     : agents::ErrorKind::Internal;
+      return agents::AgentOutcome::failure(kind_of, why);
+    }
+    try {
+      return agents::AgentOutcome::success(nlohmann::json::parse(bus::view(resp->result_json())));
+    } catch (const nlohmann::json::parse_error& e) {
+      return agents::AgentOutcome::failure(agents::ErrorKind::Internal,
+                                           "the " + kind + " agent answered malformed JSON: " + e.what());
+    }
+  };
+}
+
+int serve_agent(const AgentProcessOptions& options, const std::string& kind, const AgentFactory& make) {
   const auto& stop = install_stop_signals();
   bus::NodeOptions no;
-  no.kind = agent->kind();
+  no.kind = kind;
   no.name = options.name.empty() ? no.kind : options.name;
   no.bus = options.bus.empty() ? bus::default_bus_endpoint() : options.bus;
   no.heartbeat_period = std::chrono::milliseconds(options.heartbeat_ms);
@@ -115,6 +149,7 @@ int serve_agent(const AgentProcessOptions& options, std::unique_ptr<agents::Agen
   init_logging(no.name);
   try {
     bus::Node node(no);
+    auto agent = make(node);
     node.serve(bus::topics::agent_request(no.kind),
                [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
                  return answer_agent_request(*agent, no.name, request, fbb);
@@ -146,7 +181,11 @@ int agent_main(int argc, char** argv, const std::string& kind) {
   AgentProcessOptions options;
   add_node_options(app, options);
   if (const int code = parse_or_exit(app, argc, argv); code >= 0) return code;
-  return serve_agent(options, agents::make_agent(kind));
+  return serve_agent(options, kind, [&](bus::Node& node) {
+    // The manager reaches the other agents over the bus; each answer may take a while.
+    return agents::make_agent(kind, kind == "manager" ? bus_caller(node, std::chrono::seconds(60))
+                                                      : agents::manager::AgentCaller{});
+  });
 }
 
 }  // namespace chatsim::processes

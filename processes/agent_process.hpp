@@ -1,12 +1,18 @@
 #pragma once
 // What every agent process shares: common options, and serving an Agent on the bus.
 // Each *_main.cpp is a few lines on top of this.
+#include <functional>
 #include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "agents/core/agent.hpp"
+#include "agents/manager/manager.hpp"
+
+namespace chatsim::bus {
+class Node;
+}
 
 namespace chatsim::processes {
 
@@ -24,9 +30,15 @@ void add_node_options(CLI::App& app, AgentProcessOptions& options);
 // Parses argv; returns -1 to go on, else the exit code to return (help: 0, bad usage: 2).
 int parse_or_exit(CLI::App& app, int argc, char** argv);
 
-// Serves agent on the bus (requests on /agent/<kind>/request; the manager also serves
+// Makes the agent once the node exists (the manager calls the other agents through it).
+using AgentFactory = std::function<std::unique_ptr<agents::Agent>(bus::Node& node)>;
+
+// Serves the agent on the bus (requests on /agent/<kind>/request; the manager also serves
 // /chat/request) until SIGINT/SIGTERM. Returns the process exit code.
-int serve_agent(const AgentProcessOptions& options, std::unique_ptr<agents::Agent> agent);
+int serve_agent(const AgentProcessOptions& options, const std::string& kind, const AgentFactory& make);
+
+// Calls another agent over the bus: AgentRequest out, AgentResponse back, within timeout.
+agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout);
 
 // The whole main() of an agent process with no options of its own.
 int agent_main(int argc, char** argv, const std::string& kind);

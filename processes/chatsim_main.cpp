@@ -9,6 +9,9 @@ int main(int argc, char** argv) {
   int result = chatsim::exit_code::kOk;
   chatsim::cli::add_launch_command(app, result);
   chatsim::cli::add_bench_command(app, result);
+  chatsim::cli::add_scene_command(app, result);
+  chatsim::cli::add_plan_command(app, result);
+  chatsim::cli::add_eval_command(app, result);
   if (const int code = chatsim::processes::parse_or_exit(app, argc, argv); code >= 0) return code;
   return result;
 }

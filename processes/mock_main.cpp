@@ -24,7 +24,11 @@ int main(int argc, char** argv) {
                     script.agent, agent);
       return exit_code::kUsage;
     }
-    return processes::serve_agent(options, std::make_unique<agents::MockAgent>(std::move(script)));
+    const std::string kind = script.agent;
+    auto shared = std::make_shared<agents::MockScript>(std::move(script));
+    return processes::serve_agent(options, kind, [shared](bus::Node&) {
+      return std::make_unique<agents::MockAgent>(std::move(*shared));
+    });
   } catch (const agents::MockScriptError& e) {
     spdlog::error("{}", e.what());
     return exit_code::kUsage;

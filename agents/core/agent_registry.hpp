@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "agents/core/agent.hpp"
+#include "agents/manager/manager.hpp"
 
 namespace chatsim::agents {
 
@@ -18,8 +19,13 @@ struct AgentKindInfo {
 const std::vector<AgentKindInfo>& agent_kinds();
 const AgentKindInfo* find_agent_kind(const std::string& kind);
 
-// The agent of that kind. Until a kind's capability lands, its agent answers every call with
-// an explicit NotImplemented error, never a made-up result.
-std::unique_ptr<Agent> make_agent(const std::string& kind);
+// The agent of that kind, deciding with the LLM backend of $CHATSIM_LLM (default offline).
+// The manager reaches the other agents through `caller` (over the bus in a process); without
+// one it runs them in-process. Until a kind's capability lands, its agent answers every call
+// with an explicit NotImplemented error, never a made-up result.
+std::unique_ptr<Agent> make_agent(const std::string& kind, manager::AgentCaller caller = {});
+
+// Runs the view, deletion, asset and motion agents in this process.
+manager::AgentCaller local_caller(std::shared_ptr<llm::Backend> backend);
 
 }  // namespace chatsim::agents

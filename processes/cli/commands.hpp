@@ -8,5 +8,8 @@ namespace chatsim::cli {
 // Each adds a sub-command; `result` receives the exit code when it runs.
 void add_launch_command(CLI::App& app, int& result);
 void add_bench_command(CLI::App& app, int& result);
+void add_scene_command(CLI::App& app, int& result);
+void add_plan_command(CLI::App& app, int& result);
+void add_eval_command(CLI::App& app, int& result);
 
 }  // namespace chatsim::cli

@@ -12,13 +12,17 @@ TEST(AgentRegistry, HasTheSevenAgentsOfTheDesign) {
   EXPECT_THROW(make_agent("painter"), std::invalid_argument);
 }
 
-// Until an agent's capability lands, it says so instead of inventing a result.
+// Until an agent's capability lands, it says so instead of inventing a result; the others
+// refuse actions they do not have.
 TEST(AgentRegistry, MissingCapabilitiesAnswerNotImplemented) {
   for (const auto& k : agent_kinds()) {
     auto agent = make_agent(k.kind);
-    const auto out = agent->handle({"decide", "scene", nlohmann::json::object()});
+    const auto out = agent->handle({"no-such-action", "scene", nlohmann::json::object()});
     EXPECT_FALSE(out.ok) << k.kind;
-    EXPECT_EQ(out.error, ErrorKind::NotImplemented) << k.kind;
-    EXPECT_NE(out.message.find("issue"), std::string::npos) << out.message;
+    const bool renderer = k.kind == "background" || k.kind == "foreground";
+    EXPECT_EQ(out.error, renderer ? ErrorKind::NotImplemented : ErrorKind::BadRequest) << k.kind;
+    if (renderer) {
+      EXPECT_NE(out.message.find("issue"), std::string::npos) << out.message;
+    }
   }
 }

@@ -1,0 +1,192 @@
+#include "agents/asset/asset_choice.hpp"
+
+#include <cctype>
+
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+
+namespace chatsim::agents::asset {
+namespace {
+
+struct CatalogEntry {
+  const char* asset;
+  const char* type;
+  const char* brand;  // "" for generic
+  std::array<double, 3> size;
+  std::array<int, 3> color;
+};
+
+// Real-world dimensions (metres) and a default paint; brand entries use the generic meshes of
+// their type with the brand's proportions until the asset bank (issue 7) brings real meshes.
+const std::vector<CatalogEntry>& catalog() {
+  static const std::vector<CatalogEntry> c{
+      {"sedan", "car", "", {4.6, 1.85, 1.45}, {170, 172, 176}},
+      {"suv", "suv", "", {4.8, 1.95, 1.75}, {40, 40, 45}},
+      {"pickup_truck", "truck", "", {5.9, 2.0, 1.9}, {200, 200, 205}},
+      {"box_truck", "truck", "", {8.0, 2.5, 3.3}, {235, 235, 235}},
+      {"van", "van", "", {5.0, 2.0, 2.2}, {235, 235, 235}},
+      {"city_bus", "bus", "", {12.0, 2.55, 3.2}, {230, 230, 230}},
+      {"police_car", "police", "", {4.9, 1.9, 1.5}, {20, 20, 25}},
+      {"taxi", "taxi", "", {4.6, 1.85, 1.5}, {240, 200, 20}},
+      {"ambulance", "ambulance", "", {6.0, 2.2, 2.6}, {240, 240, 240}},
+      {"firetruck", "firetruck", "", {9.0, 2.5, 3.2}, {200, 20, 20}},
+      {"motorcycle", "motorcycle", "", {2.1, 0.8, 1.3}, {30, 30, 30}},
+      {"bicycle", "bicycle", "", {1.8, 0.6, 1.1}, {30, 60, 200}},
+      {"traffic_cone", "cone", "", {0.4, 0.4, 0.7}, {250, 110, 20}},
+      {"road_barrier", "barrier", "", {2.0, 0.5, 1.0}, {240, 240, 240}},
+      {"porsche_911", "car", "porsche", {4.5, 1.85, 1.3}, {200, 25, 25}},
+      {"tesla_model_3", "car", "tesla", {4.7, 1.85, 1.45}, {240, 240, 240}},
+      {"mini_cooper", "car", "mini", {3.9, 1.75, 1.4}, {30, 90, 50}},
+      {"chevrolet_malibu", "car", "chevrolet", {4.9, 1.85, 1.45}, {30, 60, 200}},
+      {"jeep_wrangler", "suv", "jeep", {4.3, 1.9, 1.85}, {30, 90, 50}},
+      {"landrover_defender", "suv", "landrover", {4.8, 2.0, 1.97}, {40, 40, 45}},
+      {"ford_f150", "truck", "ford", {5.9, 2.0, 1.95}, {30, 60, 200}},
+      {"ram_1500", "truck", "ram", {5.8, 2.1, 1.97}, {200, 25, 25}},
+      {"scania_r", "truck", "scania", {8.0, 2.5, 3.6}, {240, 240, 240}},
+      {"harley_davidson", "motorcycle", "harley", {2.4, 0.95, 1.2}, {20, 20, 20}}};
+  return c;
+}
+
+const CatalogEntry& generic(const std::string& type) {
+  for (const auto& e : catalog())
+    if (std::string(e.brand).empty() && e.type == type) return e;
+  return catalog().front();
+}
+
+// A capitalised word right before a vehicle noun that we do not know: an unknown brand.
+std::optional<std::string> unknown_brand_in(const std::string& instruction, const std::vector<std::string>& w) {
+  const auto types = lexicon::find_types(w);
+  if (types.empty() || types.front().begin == 0) return std::nullopt;
+  const std::string before = w[types.front().begin - 1];
+  static const char* common[] = {"a", "an", "the", "one", "another", "new", "red", "big", "small", "old", "fast",
+                                 "slow", "parked", "moving", "police", "white", "black", "second", "sports", "my"};
+  for (const char* c : common)
+    if (before == c) return std::nullopt;
+  if (lexicon::is_color_word(before) || text::is_number_word(before) || before == "dark" || before == "light") return std::nullopt;
+  // Only if the user wrote it with a capital letter (a name, not an adjective).
+  const size_t at = instruction.find(before.size() ? std::string(1, char(std::toupper(before[0]))) + before.substr(1) : "");
+  if (at == std::string::npos) return std::nullopt;
+  if (at == 0) return std::nullopt;  // sentence start capitalises anything
+  return instruction.substr(at, before.size());
+}
+
+}  // namespace
+
+AssetRequest parse_asset(const std::string& instruction) {
+  const auto w = text::words(instruction);
+  AssetRequest r;
+  const auto types = lexicon::find_types(w);
+  for (const auto& t : types)
+    if (t.type.type != "object" && t.type.type != "pedestrian") {
+      r.type = t.type.type;
+      break;
+    }
+  const auto brands = lexicon::find_brands(w);
+  if (!brands.empty()) {
+    r.brand = brands.front().brand;
+    if (!r.type || *r.type == "car") {
+      if (brands.front().type != "car" || !r.type) r.type = brands.front().type;
+    }
+  } else if (auto u = unknown_brand_in(instruction, w)) {
+    r.unknown_brand = *u;
+  }
+  const auto colors = lexicon::find_colors(w);
+  if (!colors.empty()) {
+    r.color = colors.front().name;
+    r.color_rgb = colors.front().rgb;
+  }
+  if (!types.empty()) {
+    const size_t at = types.front().begin;
+    // "two traffic cones", "500 cars", "a couple of vans": the count word right before the noun phrase.
+    for (size_t i = at; i-- > 0 && at - i <= 4;) {
+      size_t used = 0;
+      const auto v = text::number_at(w, i, &used);
+      if (v && i + used <= at && *v >= 1 && std::floor(*v) == *v) {
+        r.count = int(*v);
+        break;
+      }
+    }
+  }
+  return r;
+}
+
+nlohmann::json to_json(const AssetRequest& r) {
+  nlohmann::json j = nlohmann::json::object();
+  if (r.type) j["type"] = *r.type;
+  if (r.brand) j["brand"] = *r.brand;
+  if (r.unknown_brand) j["unknown_brand"] = *r.unknown_brand;
+  if (r.color) j["color"] = *r.color;
+  if (r.color_rgb) j["color_rgb"] = *r.color_rgb;
+  if (r.count) j["count"] = *r.count;
+  return j;
+}
+
+AssetRequest asset_request_from_json(const nlohmann::json& j) {
+  AssetRequest r;
+  if (!j.is_object()) return r;
+  if (j.contains("type")) r.type = j["type"].get<std::string>();
+  if (j.contains("brand")) r.brand = j["brand"].get<std::string>();
+  if (j.contains("unknown_brand")) r.unknown_brand = j["unknown_brand"].get<std::string>();
+  if (j.contains("color")) r.color = j["color"].get<std::string>();
+  if (j.contains("color_rgb")) r.color_rgb = j["color_rgb"].get<std::array<int, 3>>();
+  if (j.contains("count")) r.count = j["count"].get<int>();
+  return r;
+}
+
+AssetChoice choose_asset(const AssetRequest& r, const std::optional<AssetChoice>& base) {
+  AssetChoice out = base.value_or(AssetChoice{});
+  const bool new_vehicle = !base.has_value();
+  const std::string type = r.type.value_or(base ? base->type : "car");
+  const CatalogEntry* entry = nullptr;
+  if (r.brand) {
+    for (const auto& e : catalog())
+      if (r.brand == e.brand && (!r.type || e.type == type)) entry = &e;
+    if (entry == nullptr) {  // a brand we know, but not in this type: generic mesh with the brand's name
+      const auto& g = generic(type);
+      out.asset = *r.brand + "_" + g.asset;
+      out.brand_words = {*r.brand};
+      out.size_lwh = g.size;
+      if (new_vehicle) out.color_rgb = g.color;
+    }
+  } else if (r.type && (new_vehicle || *r.type != base->type)) {
+    entry = &generic(type);
+  } else if (new_vehicle) {
+    entry = &generic(type);
+  }
+  if (entry != nullptr) {
+    out.asset = entry->asset;
+    out.brand_words.clear();
+    if (std::string(entry->brand).size()) out.brand_words.push_back(entry->brand);
+    out.size_lwh = entry->size;
+    if (new_vehicle) out.color_rgb = entry->color;
+  }
+  out.type = type;
+  if (const auto* vt = lexicon::vehicle_type(type)) out.category = vt->category;
+  if (r.color_rgb) out.color_rgb = *r.color_rgb;
+  if (r.unknown_brand && !r.brand) {
+    out.note = "no asset for the brand '" + *r.unknown_brand + "'; used a generic " + type;
+    out.brand_words = {*r.unknown_brand};
+  }
+  return out;
+}
+
+nlohmann::json to_json(const AssetChoice& c) {
+  nlohmann::json j{{"asset", c.asset}, {"type", c.type}, {"category", c.category}, {"brand_words", c.brand_words},
+                   {"size_lwh", c.size_lwh}, {"color_rgb", c.color_rgb}};
+  if (c.note) j["note"] = *c.note;
+  return j;
+}
+
+AssetChoice asset_choice_from_json(const nlohmann::json& j) {
+  AssetChoice c;
+  c.asset = j.value("asset", "");
+  c.type = j.value("type", "car");
+  c.category = j.value("category", "vehicle.car");
+  c.brand_words = j.value("brand_words", std::vector<std::string>{});
+  c.size_lwh = j.value("size_lwh", std::array<double, 3>{4.5, 1.9, 1.5});
+  c.color_rgb = j.value("color_rgb", std::array<int, 3>{128, 128, 128});
+  if (j.contains("note")) c.note = j["note"].get<std::string>();
+  return c;
+}
+
+}  // namespace chatsim::agents::asset

@@ -1,0 +1,256 @@
+#include "agents/deletion/deletion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+
+namespace chatsim::agents::deletion {
+namespace {
+
+using Words = std::vector<std::string>;
+
+// Splits "the yellow car and the green one" into noun phrases.
+std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
+  std::vector<Words> out(1);
+  for (size_t i = begin; i < end; ++i) {
+    if (w[i] == "and" || w[i] == "or" || w[i] == "plus" || w[i] == "as") {
+      if (!out.back().empty()) out.emplace_back();
+      continue;
+    }
+    out.back().push_back(w[i]);
+  }
+  if (out.back().empty()) out.pop_back();
+  return out;
+}
+
+int ordinal(const std::string& w) {
+  static const char* words[] = {"first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth"};
+  for (int i = 0; i < 8; ++i)
+    if (w == words[i]) return i + 1;
+  if (w == "1st") return 1;
+  if (w == "2nd") return 2;
+  if (w == "3rd") return 3;
+  return 0;
+}
+
+Selector parse_phrase(const Words& p, const Selector* previous) {
+  Selector s;
+  const auto types = lexicon::find_types(p);
+  if (!types.empty()) {
+    const auto& t = types.front().type;
+    s.category = t.type == "object" ? "" : t.scene_prefix;
+    s.noun = text::join(p, types.front().begin, types.front().end);
+    if (types.front().plural) s.quantity = "all";
+  } else if (previous != nullptr) {  // "the green one"
+    s.category = previous->category;
+    s.noun = previous->noun;
+  }
+  if (text::has_any(p, {"everything", "all objects", "anything", "every object"})) {
+    s.category = "";
+    s.quantity = "all";
+  }
+  if (text::has_any(p, {"all", "every", "each", "any"})) s.quantity = "all";
+  const auto colors = lexicon::find_colors(p);
+  if (!colors.empty()) s.color = lexicon::color_class(colors.front().rgb);
+  if (text::has_any(p, {"in front", "ahead", "front"})) s.region = "front";
+  else if (text::has_any(p, {"behind", "back", "rear"})) s.region = "back";
+  else if (text::has_any(p, {"left"})) s.region = "left";
+  else if (text::has_any(p, {"right"})) s.region = "right";
+  if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still"})) s.moving = false;
+  else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling"})) s.moving = true;
+  if (text::has_any(p, {"closest", "nearest", "near", "close"})) s.order = "nearest";
+  else if (text::has_any(p, {"farthest", "furthest", "far", "most distant"})) s.order = "farthest";
+  for (size_t i = 0; i < p.size(); ++i)
+    if (int k = ordinal(p[i])) {
+      s.nth = k;
+      if (!s.order) s.order = "nearest";
+      s.quantity = "one";
+    }
+  // "two cars", "3 trucks"
+  if (!types.empty())
+    for (size_t i = 0; i < types.front().begin; ++i) {
+      size_t used = 0;
+      const auto v = text::number_at(p, i, &used);
+      if (v && *v >= 2 && i + used <= types.front().begin) {
+        s.quantity = "n";
+        s.n = int(*v);
+      }
+    }
+  if (s.order && s.quantity == "all" && !text::has_any(p, {"all", "every", "each"})) s.quantity = "one";
+  return s;
+}
+
+struct Candidate {
+  const scene::ObjectTrack* object;
+  Eigen::Vector2d pe;   // ego frame 0
+  double speed;
+};
+
+bool matches(const Selector& s, const Candidate& c) {
+  if (!s.category.empty() && !c.object->has_category_prefix(s.category)) return false;
+  if (s.color && (!c.object->color_rgb || lexicon::color_class(*c.object->color_rgb) != *s.color)) return false;
+  if (s.moving && (c.speed > 0.5) != *s.moving) return false;
+  if (s.region) {
+    const double a = std::atan2(c.pe.y(), c.pe.x()) * 180 / std::numbers::pi;
+    if (*s.region == "front" && !(c.pe.x() > 0 && std::abs(a) <= 60)) return false;
+    if (*s.region == "back" && !(c.pe.x() < 0 && std::abs(a) >= 120)) return false;
+    if (*s.region == "left" && !(c.pe.y() > 0.5)) return false;
+    if (*s.region == "right" && !(c.pe.y() < -0.5)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string describe(const Selector& s) {
+  std::string out = s.quantity == "all" ? "every " : "the ";
+  if (s.order) out += (s.nth > 1 ? std::to_string(s.nth) + (s.nth == 2 ? "nd " : s.nth == 3 ? "rd " : "th ") : "") +
+                      *s.order + " ";
+  if (s.moving) out += *s.moving ? "moving " : "parked ";
+  if (s.color) out += *s.color + " ";
+  out += s.noun.empty() ? "object" : s.noun;
+  if (s.region) out += " (" + *s.region + ")";
+  return out;
+}
+
+DeletionRequest parse_deletion(const std::string& instruction) {
+  const Words w = text::words(instruction);
+  DeletionRequest r;
+  if (auto u = lexicon::unsupported_noun(w)) r.unsupported = *u;
+  size_t except_len = 0;
+  const size_t except_at = text::find_any(w, {"except", "but not", "other than", "apart from", "besides", "but the",
+                                              "excluding", "save for", "but leave", "but keep"}, &except_len);
+  const size_t end = except_at == std::string::npos ? w.size() : except_at;
+  // Skip the verb: the phrase starts after remove/delete/erase/get rid of ...
+  size_t begin = 0;
+  for (size_t i = 0; i < end; ++i) {
+    static const char* verbs[] = {"remove", "delete", "erase", "rid", "clear", "eliminate", "take", "drop", "hide",
+                                  "removes", "deletes", "erases", "away", "of"};
+    for (const char* v : verbs)
+      if (w[i] == v) begin = i + 1;
+    if (lexicon::find_types({w[i]}).size() > 0) break;
+  }
+  const Selector* prev = nullptr;
+  for (const auto& p : phrases(w, begin, end)) {
+    r.targets.push_back(parse_phrase(p, prev));
+    prev = &r.targets.back();
+  }
+  if (r.targets.empty() && text::has_any(w, {"everything", "all"})) {
+    Selector s;
+    s.category = "vehicle";
+    s.quantity = "all";
+    r.targets.push_back(s);
+  }
+  if (except_at != std::string::npos)
+    for (const auto& p : phrases(w, except_at + except_len, w.size())) r.except.push_back(parse_phrase(p, nullptr));
+  // "all vehicles except the truck": an except list implies "all".
+  if (!r.except.empty())
+    for (auto& t : r.targets)
+      if (!t.order) t.quantity = "all";
+  return r;
+}
+
+static nlohmann::json selector_json(const Selector& s) {
+  nlohmann::json j{{"category", s.category}, {"noun", s.noun}, {"quantity", s.quantity}};
+  if (s.quantity == "n") j["n"] = s.n;
+  if (s.color) j["color"] = *s.color;
+  if (s.region) j["region"] = *s.region;
+  if (s.moving) j["moving"] = *s.moving;
+  if (s.order) {
+    j["order"] = *s.order;
+    j["nth"] = s.nth;
+  }
+  return j;
+}
+
+static Selector selector_from(const nlohmann::json& j) {
+  Selector s;
+  s.category = j.value("category", "vehicle");
+  s.noun = j.value("noun", "object");
+  s.quantity = j.value("quantity", "one");
+  s.n = j.value("n", 1);
+  if (j.contains("color")) s.color = j["color"].get<std::string>();
+  if (j.contains("region")) s.region = j["region"].get<std::string>();
+  if (j.contains("moving")) s.moving = j["moving"].get<bool>();
+  if (j.contains("order")) s.order = j["order"].get<std::string>();
+  s.nth = j.value("nth", 1);
+  return s;
+}
+
+nlohmann::json to_json(const DeletionRequest& r) {
+  nlohmann::json j{{"targets", nlohmann::json::array()}, {"except", nlohmann::json::array()}};
+  for (const auto& s : r.targets) j["targets"].push_back(selector_json(s));
+  for (const auto& s : r.except) j["except"].push_back(selector_json(s));
+  if (r.unsupported) j["unsupported"] = *r.unsupported;
+  return j;
+}
+
+DeletionRequest deletion_request_from_json(const nlohmann::json& j) {
+  DeletionRequest r;
+  for (const auto& s : j.value("targets", nlohmann::json::array())) r.targets.push_back(selector_from(s));
+  for (const auto& s : j.value("except", nlohmann::json::array())) r.except.push_back(selector_from(s));
+  if (j.contains("unsupported")) r.unsupported = j["unsupported"].get<std::string>();
+  return r;
+}
+
+Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, const std::vector<std::string>& removed) {
+  Selection out;
+  if (r.unsupported) {
+    out.problems.push_back("there is no " + *r.unsupported + " in the scene, and it is not something that can be selected");
+    return out;
+  }
+  const Eigen::Isometry3d to_ego = scene.world_to_ego0();
+  std::vector<Candidate> cands;
+  for (const auto& o : scene.objects) {
+    if (std::find(removed.begin(), removed.end(), o.id) != removed.end()) continue;
+    const auto p0 = o.at(0);
+    if (!p0) continue;
+    double speed = 0;
+    const int last = o.track.back().frame;
+    if (last > 0 && scene.frames.size() > size_t(last)) {
+      const double dt = scene.frames[size_t(last)].timestamp_s - scene.frames[0].timestamp_s;
+      if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
+    }
+    cands.push_back({&o, (to_ego * p0->center).head<2>(), speed});
+  }
+  std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.pe.norm() < b.pe.norm(); });
+  std::vector<std::string> chosen;
+  for (const auto& t : r.targets) {
+    std::vector<const Candidate*> m;
+    for (const auto& c : cands)
+      if (matches(t, c)) m.push_back(&c);
+    if (m.empty()) {
+      out.problems.push_back("no " + describe(t).substr(t.quantity == "all" ? 6 : 4) + " in the scene" +
+                             (removed.empty() ? "" : " (or it was already removed)"));
+      continue;
+    }
+    if (t.order == "farthest") std::reverse(m.begin(), m.end());
+    if (t.quantity == "all") {
+      for (const auto* c : m) chosen.push_back(c->object->id);
+    } else if (t.quantity == "n") {
+      for (size_t i = 0; i < m.size() && int(i) < t.n; ++i) chosen.push_back(m[i]->object->id);
+      if (int(m.size()) < t.n)
+        out.problems.push_back("asked for " + std::to_string(t.n) + " but the scene has only " + std::to_string(m.size()));
+    } else {
+      const size_t k = size_t(std::max(1, t.nth)) - 1;
+      if (k >= m.size()) {
+        out.problems.push_back("there is no " + describe(t).substr(4) + ": only " + std::to_string(m.size()) + " match");
+        continue;
+      }
+      chosen.push_back(m[k]->object->id);
+    }
+  }
+  for (const auto& e : r.except)
+    for (const auto& c : cands)
+      if (matches(e, c)) chosen.erase(std::remove(chosen.begin(), chosen.end(), c.object->id), chosen.end());
+  for (const auto& c : cands)
+    if (std::find(chosen.begin(), chosen.end(), c.object->id) != chosen.end() &&
+        std::find(out.ids.begin(), out.ids.end(), c.object->id) == out.ids.end())
+      out.ids.push_back(c.object->id);
+  return out;
+}
+
+}  // namespace chatsim::agents::deletion

@@ -1,0 +1,46 @@
+#pragma once
+// The deletion agent: which labelled objects an instruction means ("all cars", "the red car
+// closest to me", "the second car on the left", "every vehicle except the truck").
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/scene/scene.hpp"
+
+namespace chatsim::agents::deletion {
+
+struct Selector {
+  std::string category = "vehicle";     // category prefix; "" selects every object
+  std::string noun = "car";             // as said, for messages
+  std::optional<std::string> color;     // basic colour class
+  std::optional<std::string> region;    // front, back, left, right
+  std::optional<bool> moving;
+  std::string quantity = "one";         // one, all, n
+  int n = 1;
+  std::optional<std::string> order;     // nearest, farthest
+  int nth = 1;                          // with order: the nth nearest/farthest
+};
+
+// What the instruction says (the "LLM" part).
+struct DeletionRequest {
+  std::vector<Selector> targets;
+  std::vector<Selector> except;
+  std::optional<std::string> unsupported;   // "helicopter": something no scene has
+};
+DeletionRequest parse_deletion(const std::string& instruction);
+nlohmann::json to_json(const DeletionRequest& r);
+DeletionRequest deletion_request_from_json(const nlohmann::json& j);
+
+struct Selection {
+  std::vector<std::string> ids;         // sorted by distance from the ego at frame 0
+  std::vector<std::string> problems;    // targets that matched nothing, with why
+};
+// The objects selected, among those not already removed.
+Selection select_objects(const scene::Scene& scene, const DeletionRequest& request,
+                         const std::vector<std::string>& removed);
+
+std::string describe(const Selector& s);
+
+}  // namespace chatsim::agents::deletion

@@ -1,0 +1,51 @@
+#pragma once
+// What words mean in this domain: colours, vehicle types and brands, scene categories.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace chatsim::agents::lexicon {
+
+using Rgb = std::array<int, 3>;
+
+// The basic colour names the command cases grade by (red, orange, yellow, green, blue, purple,
+// white, black, gray), judged on hue, saturation and lightness.
+std::string color_class(const Rgb& rgb);
+
+struct ColorMention {
+  std::string name;      // as said, e.g. "dark blue", "silver"
+  Rgb rgb{};
+  size_t begin = 0, end = 0;  // word span
+};
+// All colour words in order ("dark blue", "light gray", "silver", "red", ...).
+std::vector<ColorMention> find_colors(const std::vector<std::string>& words);
+
+struct VehicleType {
+  std::string type;          // car, suv, truck, bus, van, police, taxi, ambulance, firetruck, motorcycle, cone, barrier
+  std::string category;      // the scene category an added one gets, e.g. vehicle.emergency.police
+  std::string scene_prefix;  // what it selects among labelled objects, e.g. vehicle.truck
+};
+
+struct TypeMention {
+  VehicleType type;
+  size_t begin = 0, end = 0;
+  bool plural = false;
+};
+// Vehicle and object nouns in order ("police car" before "car", "fire truck" before "truck").
+std::vector<TypeMention> find_types(const std::vector<std::string>& words);
+const VehicleType* vehicle_type(const std::string& type);
+
+struct BrandMention {
+  std::string brand;     // porsche
+  std::string type;      // its usual type: car, suv, truck
+  size_t begin = 0, end = 0;
+};
+std::vector<BrandMention> find_brands(const std::vector<std::string>& words);
+
+// Words that name something we cannot select or add (helicopter, plane, ...).
+std::optional<std::string> unsupported_noun(const std::vector<std::string>& words);
+
+bool is_color_word(const std::string& w);
+
+}  // namespace chatsim::agents::lexicon

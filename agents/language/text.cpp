@@ -1,0 +1,186 @@
+#include "agents/language/text.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <map>
+
+namespace chatsim::agents::text {
+namespace {
+
+const std::map<std::string, std::string>& spellings() {
+  static const std::map<std::string, std::string> m{
+      {"metres", "meters"}, {"metre", "meter"}, {"colour", "color"}, {"grey", "gray"},
+      {"towards", "toward"}, {"kph", "km/h"}, {"kmh", "km/h"}, {"kmph", "km/h"}, {"mins", "minutes"},
+      {"centre", "center"}, {"lorry", "truck"}, {"lorries", "trucks"}, {"tyre", "tire"}};
+  return m;
+}
+
+const std::map<std::string, double>& number_words() {
+  static const std::map<std::string, double> m{
+      {"zero", 0},      {"one", 1},        {"two", 2},        {"three", 3},     {"four", 4},
+      {"five", 5},      {"six", 6},        {"seven", 7},      {"eight", 8},     {"nine", 9},
+      {"ten", 10},      {"eleven", 11},    {"twelve", 12},    {"thirteen", 13}, {"fourteen", 14},
+      {"fifteen", 15},  {"sixteen", 16},   {"seventeen", 17}, {"eighteen", 18}, {"nineteen", 19},
+      {"twenty", 20},   {"thirty", 30},    {"forty", 40},     {"fifty", 50},    {"sixty", 60},
+      {"seventy", 70},  {"eighty", 80},    {"ninety", 90},    {"hundred", 100}, {"dozen", 12},
+      {"a", 1},         {"an", 1},         {"single", 1},     {"half", 0.5},    {"couple", 2},
+      {"pair", 2},      {"few", 3},        {"several", 4},    {"thousand", 1000}};
+  return m;
+}
+
+std::optional<double> parse_digits(const std::string& s) {
+  if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '.' || s[0] == '-')) return std::nullopt;
+  double v = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || ptr != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+std::vector<std::string> words(std::string_view s) {
+  std::vector<std::string> out;
+  std::string cur;
+  auto flush = [&] {
+    while (!cur.empty() && cur.back() == '.') cur.pop_back();
+    while (!cur.empty() && cur.front() == '.' && (cur.size() < 2 || !std::isdigit(static_cast<unsigned char>(cur[1]))))
+      cur.erase(cur.begin());
+    if (!cur.empty()) {
+      const auto it = spellings().find(cur);
+      out.push_back(it == spellings().end() ? cur : it->second);
+    }
+    cur.clear();
+  };
+  for (size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    // '-' joins only a sign to a number ("-3"); "front-left" is two words.
+    const bool sign = c == '-' && cur.empty() && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1]));
+    if (std::isalnum(c) || c == '.' || sign || c == '/' || c >= 0x80) {
+      // "5m" and "30km/h" split into number and unit.
+      if (!cur.empty() && std::isalpha(c) && std::isdigit(static_cast<unsigned char>(cur.back()))) flush();
+      cur.push_back(char(std::tolower(c)));
+    } else if (c == '\'' && !cur.empty()) {
+      // "don't" -> "dont"; "car's" -> "car"
+      if (i + 1 < s.size() && (s[i + 1] == 's' || s[i + 1] == 'S') &&
+          (i + 2 >= s.size() || !std::isalpha(static_cast<unsigned char>(s[i + 2])))) {
+        ++i;
+        flush();
+      }
+    } else {
+      flush();
+    }
+  }
+  flush();
+  // "m/s" stays one word; "km/h" too.
+  return out;
+}
+
+std::string join(const std::vector<std::string>& w, size_t begin, size_t end) {
+  std::string out;
+  for (size_t i = begin; i < std::min(end, w.size()); ++i) {
+    if (!out.empty()) out += ' ';
+    out += w[i];
+  }
+  return out;
+}
+
+size_t find_phrase(const std::vector<std::string>& w, std::string_view phrase, size_t from) {
+  const auto p = words(phrase);
+  if (p.empty()) return std::string::npos;
+  for (size_t i = from; i + p.size() <= w.size(); ++i) {
+    bool match = true;
+    for (size_t k = 0; k < p.size() && match; ++k) match = w[i + k] == p[k];
+    if (match) return i;
+  }
+  return std::string::npos;
+}
+
+bool has_phrase(const std::vector<std::string>& w, std::string_view phrase) {
+  return find_phrase(w, phrase) != std::string::npos;
+}
+
+bool has_any(const std::vector<std::string>& w, std::initializer_list<std::string_view> phrases) {
+  for (auto p : phrases)
+    if (has_phrase(w, p)) return true;
+  return false;
+}
+
+size_t find_any(const std::vector<std::string>& w, std::initializer_list<std::string_view> phrases, size_t* length) {
+  size_t best = std::string::npos;
+  for (auto p : phrases) {
+    const size_t at = find_phrase(w, p);
+    if (at < best) {
+      best = at;
+      if (length) *length = words(p).size();
+    }
+  }
+  return best;
+}
+
+bool is_number_word(const std::string& w) { return number_words().count(w) > 0 || parse_digits(w).has_value(); }
+
+std::optional<double> number_at(const std::vector<std::string>& w, size_t i, size_t* used) {
+  if (i >= w.size()) return std::nullopt;
+  if (auto d = parse_digits(w[i])) {
+    if (used) *used = 1;
+    // "1 and a half"
+    if (i + 3 < w.size() && w[i + 1] == "and" && w[i + 2] == "a" && w[i + 3] == "half") {
+      if (used) *used = 4;
+      return *d + 0.5;
+    }
+    return d;
+  }
+  const auto& nw = number_words();
+  auto it = nw.find(w[i]);
+  if (it == nw.end()) return std::nullopt;
+  double v = it->second;
+  size_t n = 1;
+  if (w[i] == "half" && i + 1 < w.size() && (w[i + 1] == "a" || w[i + 1] == "an")) n = 2;   // "half a meter"
+  if ((w[i] == "a" || w[i] == "an") && i + 1 < w.size()) {
+    const auto next = nw.find(w[i + 1]);
+    if (w[i + 1] == "half") {  // "a half meter"
+      v = 0.5;
+      n = 2;
+    } else if (next != nw.end() && next->second > 1) {  // "a dozen", "a couple of", "a few"
+      v = next->second;
+      n = 2;
+    }
+  }
+  if (v >= 20 && v < 100 && i + n < w.size()) {  // "twenty five"
+    const auto unit = nw.find(w[i + n]);
+    if (unit != nw.end() && unit->second >= 1 && unit->second < 10 && w[i + n] != "a" && w[i + n] != "an") {
+      v += unit->second;
+      ++n;
+    }
+  }
+  if (i + n < w.size() && (w[i + n] == "hundred" || w[i + n] == "thousand") && v < 100) {
+    v *= nw.at(w[i + n]);
+    ++n;
+  }
+  if (i + n < w.size() && w[i + n] == "of") ++n;  // "a couple of"
+  if (used) *used = n;
+  return v;
+}
+
+std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initializer_list<std::string_view> units) {
+  std::vector<Quantity> out;
+  for (size_t i = 0; i < w.size(); ++i) {
+    size_t used = 0;
+    const auto v = number_at(w, i, &used);
+    if (!v) continue;
+    size_t j = i + used;
+    for (auto u : units) {
+      const auto uw = words(u);
+      bool match = j + uw.size() <= w.size();
+      for (size_t k = 0; k < uw.size() && match; ++k) match = w[j + k] == uw[k];
+      if (match) {
+        out.push_back({*v, i, j + uw.size()});
+        i = j + uw.size() - 1;
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace chatsim::agents::text

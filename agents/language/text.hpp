@@ -1,0 +1,39 @@
+#pragma once
+// Small text tools for the offline interpreter: normalised words, phrase search, numbers
+// written as digits or words ("two", "half a metre", "1.5").
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace chatsim::agents::text {
+
+// Lower case; letters, digits, '.', '-' kept inside words; everything else separates words.
+// British and American spellings are folded ("metres" -> "meters").
+std::vector<std::string> words(std::string_view s);
+std::string join(const std::vector<std::string>& words, size_t begin = 0, size_t end = std::string::npos);
+
+// Index of the first occurrence of a phrase ("turn left") at or after `from`, or npos.
+size_t find_phrase(const std::vector<std::string>& w, std::string_view phrase, size_t from = 0);
+bool has_phrase(const std::vector<std::string>& w, std::string_view phrase);
+bool has_any(const std::vector<std::string>& w, std::initializer_list<std::string_view> phrases);
+// Index of the first phrase found (by position in the text), or npos.
+size_t find_any(const std::vector<std::string>& w, std::initializer_list<std::string_view> phrases,
+                size_t* length = nullptr);
+
+// A number written as digits or words at w[i] ("5", "five", "twenty five", "a", "half", "1.5").
+// On success sets `used` to how many words it took.
+std::optional<double> number_at(const std::vector<std::string>& w, size_t i, size_t* used = nullptr);
+
+// A quantity followed by one of the units, e.g. "5 m", "half a meter", "30 degrees": returns the
+// value and the index after the unit.
+struct Quantity {
+  double value = 0;
+  size_t begin = 0;   // first word of the number
+  size_t end = 0;     // one past the unit
+};
+std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initializer_list<std::string_view> units);
+
+bool is_number_word(const std::string& w);
+
+}  // namespace chatsim::agents::text

@@ -1,0 +1,313 @@
+#include "agents/manager/decompose.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+
+namespace chatsim::agents::manager {
+namespace {
+
+using Words = std::vector<std::string>;
+using text::has_any;
+
+const std::vector<std::string>& add_verbs() {
+  static const std::vector<std::string> v{"add", "adds", "put", "place", "insert", "spawn", "create", "include",
+                                          "generate", "introduce", "bring", "drop", "park", "position", "there"};
+  return v;
+}
+const std::vector<std::string>& delete_verbs() {
+  static const std::vector<std::string> v{"remove", "delete", "erase", "get", "eliminate", "clear", "take", "wipe",
+                                          "hide", "lose", "ditch"};
+  return v;
+}
+bool starts_instruction(const std::string& w) {
+  for (const auto* list : {&add_verbs(), &delete_verbs()})
+    if (std::find(list->begin(), list->end(), w) != list->end()) return true;
+  static const char* v[] = {"move", "shift", "raise", "lower", "rotate", "turn", "look", "pan", "tilt", "make",
+                            "change", "modify", "set", "paint", "restore", "undo", "simulate", "ego", "swap", "replace"};
+  for (const char* x : v)
+    if (w == x) return true;
+  return false;
+}
+
+// Sentences: split on . ! ? ; (not decimal points) and newlines.
+std::vector<std::string> sentences(const std::string& s) {
+  std::vector<std::string> out(1);
+  for (size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    const bool decimal = c == '.' && i > 0 && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i - 1])) &&
+                         std::isdigit(static_cast<unsigned char>(s[i + 1]));
+    if ((c == '.' && !decimal) || c == '!' || c == '?' || c == ';' || c == '\n') {
+      if (!out.back().empty()) out.emplace_back();
+      continue;
+    }
+    out.back().push_back(c);
+  }
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [](const std::string& x) { return x.find_first_not_of(" \t\r,") == std::string::npos; }),
+            out.end());
+  return out;
+}
+
+// Clauses: a sentence split before ", and VERB", "and VERB", ", VERB", "then VERB".
+std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before) {
+  std::vector<Words> out(1);
+  for (size_t i = 0; i < w.size(); ++i) {
+    bool split = false;
+    const bool connector = w[i] == "and" || w[i] == "then" || w[i] == "also" || w[i] == "plus";
+    if (connector && i + 1 < w.size()) {
+      size_t j = i + 1;
+      while (j < w.size() && (w[j] == "then" || w[j] == "also" || w[j] == "please" || w[j] == "finally")) ++j;
+      if (j < w.size() && starts_instruction(w[j])) {
+        split = true;
+        i = j - 1;  // drop the connector words
+      }
+    } else if (comma_before[i] && starts_instruction(w[i])) {
+      out.emplace_back();
+    }
+    if (split) {
+      out.emplace_back();
+      continue;
+    }
+    out.back().push_back(w[i]);
+  }
+  // Leading fillers and politeness ("could you", "please", "i want you to").
+  static const char* polite[] = {"could you please", "can you please", "would you please", "could you", "can you",
+                                 "would you", "will you", "i want you to", "i would like you to", "i need you to",
+                                 "id like you to", "i'd like you to", "kindly", "lets", "let us", "go ahead and", "try to"};
+  for (auto& c : out)
+    for (bool again = true; again;) {
+      again = false;
+      for (const char* p : polite) {
+        const auto pw = text::words(p);
+        if (c.size() > pw.size() && std::equal(pw.begin(), pw.end(), c.begin())) {
+          c.erase(c.begin(), c.begin() + long(pw.size()));
+          again = true;
+        }
+      }
+      if (!c.empty() && c.front() == "please") {
+        c.erase(c.begin());
+        again = true;
+      }
+    }
+  for (auto& c : out) {
+    while (!c.empty() && (c.front() == "additionally" || c.front() == "also" || c.front() == "then" || c.front() == "now" ||
+                          c.front() == "please" || c.front() == "and" || c.front() == "finally" || c.front() == "next" ||
+                          c.front() == "first" || c.front() == "lastly" || c.front() == "ok" || c.front() == "okay"))
+      c.erase(c.begin());
+  }
+  out.erase(std::remove_if(out.begin(), out.end(), [](const Words& c) { return c.empty(); }), out.end());
+  return out;
+}
+
+bool mentions_vehicle(const Words& w) {
+  for (const auto& t : lexicon::find_types(w))
+    if (t.type.type != "object" && t.type.type != "pedestrian") return true;
+  return !lexicon::find_brands(w).empty();
+}
+
+bool refers_to_added(const Words& w) {
+  return has_any(w, {"it", "them", "both", "they", "added", "new", "you added", "i added", "we added", "inserted",
+                     "that car", "this car", "the one"});
+}
+
+// "add a porsche ahead and a mini on my left" -> two add texts.
+std::vector<Words> split_additions(const Words& c) {
+  std::vector<Words> out(1);
+  for (size_t i = 0; i < c.size(); ++i) {
+    if ((c[i] == "and" || c[i] == "plus") && i + 2 < c.size() &&
+        (c[i + 1] == "a" || c[i + 1] == "an" || c[i + 1] == "another" ||
+         (text::is_number_word(c[i + 1]) && c[i + 1] != "half")) &&
+        c[i + 2] != "half") {
+      // Only when a vehicle noun or brand follows before the next "and".
+      Words rest(c.begin() + long(i) + 1, c.end());
+      const auto next_and = std::find(rest.begin(), rest.end(), "and");
+      if (mentions_vehicle(Words(rest.begin(), next_and))) {
+        out.emplace_back(Words{"add"});
+        continue;
+      }
+    }
+    out.back().push_back(c[i]);
+  }
+  return out;
+}
+
+Instruction classify(const Words& c) {
+  Instruction in;
+  in.text = text::join(c);
+  const std::string first = c.front();
+  auto starts = [&](const std::vector<std::string>& verbs) {
+    return std::find(verbs.begin(), verbs.end(), first) != verbs.end();
+  };
+  if (has_any(c, {"put back", "bring back", "restore", "undo the deletion", "undo the removal", "undelete",
+                  "add back", "re-add", "readd", "put it back", "put them back", "undo"})) {
+    in.kind = "restore";
+    in.target = in.text;
+    return in;
+  }
+  if (has_any(c, {"traffic jam", "congestion", "gridlock", "stuck in traffic", "bumper to bumper", "jammed"})) {
+    in.kind = "traffic_jam";
+    return in;
+  }
+  if (has_any(c, {"busy road", "busy street", "heavy traffic", "rush hour", "lots of traffic", "crowded road",
+                  "dense traffic", "busy", "more traffic", "lot of traffic"})) {
+    in.kind = "busy_road";
+    return in;
+  }
+  if (has_any(c, {"road empty", "empty road", "empty the road", "empty street", "street empty", "no cars", "no vehicles",
+                  "clear the road", "clear the street", "deserted", "without any cars", "without cars", "without vehicles",
+                  "no traffic", "road clear", "street clear", "road is empty"})) {
+    in.kind = "delete";
+    in.text = "remove all vehicles";
+    return in;
+  }
+  if (has_any(c, {"construction zone", "construction site", "road work", "roadwork", "roadworks", "work zone",
+                  "construction area", "lane closure", "road closure", "close the lane", "closed lane"})) {
+    in.kind = "construction_zone";
+    return in;
+  }
+  const bool vehicle = mentions_vehicle(c);
+  const bool added_ref = refers_to_added(c);
+  if (starts(delete_verbs()) || has_any(c, {"get rid of", "take away", "take out"})) {
+    in.kind = added_ref ? "remove_added" : "delete";
+    in.target = added_ref ? in.text : "";
+    return in;
+  }
+  if (has_any(c, {"dangerous", "cut in", "cuts in", "cutting in", "cut off", "cuts off", "cutting me off"}) &&
+      !starts(add_verbs())) {
+    in.kind = "add";
+    std::string t = in.text;
+    if (!vehicle) t += " car";
+    if (!has_any(c, {"cut in", "cuts in", "cutting in", "cut off", "cutting me off", "cuts off"})) t += " cutting in";
+    if (!has_any(c, {"left", "right"})) t += " left front";
+    in.text = t;
+    return in;
+  }
+  if (starts(add_verbs()) && (vehicle || has_any(c, {"another", "one more", "one"}))) {
+    in.kind = "add";
+    if (has_any(c, {"another", "one more", "another one", "same", "similar"}) &&
+        !mentions_vehicle(Words(c.begin() + 1, c.end())))
+      in.target = "it";
+    return in;
+  }
+  const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
+                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"});
+  const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "set", "paint", "recolor", "turn",
+                                       "move", "speed", "slow", "swap", "replace", "switch", "should"});
+  if (!view_words && (added_ref || vehicle) && revise_verb) {
+    in.kind = "revise";
+    in.target = reference_in(in.text);
+    return in;
+  }
+  if (view_words || has_any(c, {"move", "shift", "raise", "lower", "rotate", "look", "pan", "tilt", "turn"})) {
+    const auto w = c;
+    const bool has_amount = !text::quantities(w, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty();
+    if (view_words || has_amount) {
+      in.kind = "view";
+      return in;
+    }
+  }
+  if (vehicle && !has_any(c, {"what", "why", "how", "who"})) {
+    in.kind = "add";
+    return in;
+  }
+  in.kind = "unclear";
+  return in;
+}
+
+}  // namespace
+
+std::string reference_in(const std::string& clause) {
+  const Words w = text::words(clause);
+  if (text::has_any(w, {"both of them", "both", "all of them", "them", "they", "all the added", "all added", "each of them"}))
+    return text::has_any(w, {"both"}) ? "both" : "them";
+  // "the added car", "the porsche", "the police car", "the porsche i added"
+  for (size_t i = 0; i < w.size(); ++i) {
+    if (w[i] != "the" && w[i] != "that" && w[i] != "this") continue;
+    size_t j = i + 1;
+    while (j < w.size() && (w[j] == "added" || w[j] == "new" || w[j] == "first" || w[j] == "second" || w[j] == "third" ||
+                            w[j] == "last" || lexicon::is_color_word(w[j]) || w[j] == "dark" || w[j] == "light"))
+      ++j;
+    const Words rest(w.begin() + long(j), w.end());
+    const auto types = lexicon::find_types(rest);
+    const auto brands = lexicon::find_brands(rest);
+    size_t end = j;
+    if (!brands.empty() && brands.front().begin == 0) end = j + brands.front().end;
+    if (!types.empty() && types.front().begin == end - j) end = j + types.front().end;
+    if (end > j || j > i + 1) {
+      while (end < w.size() && (w[end] == "i" || w[end] == "we" || w[end] == "you" || w[end] == "added" || w[end] == "just"))
+        ++end;
+      return text::join(w, i, end);
+    }
+  }
+  if (text::has_any(w, {"it"})) return "it";
+  return "it";
+}
+
+std::vector<Instruction> decompose(const std::string& command) {
+  std::vector<Instruction> out;
+  for (const auto& sentence : sentences(command)) {
+    // Words plus which ones had a comma before them.
+    Words w;
+    std::vector<bool> comma;
+    bool pending_comma = false;
+    std::string cur;
+    for (size_t i = 0; i <= sentence.size(); ++i) {
+      const char ch = i < sentence.size() ? sentence[i] : ' ';
+      if (ch == ',' || ch == ':') {
+        const auto ws = text::words(cur);
+        for (size_t k = 0; k < ws.size(); ++k) {
+          w.push_back(ws[k]);
+          comma.push_back(k == 0 && pending_comma);
+        }
+        cur.clear();
+        pending_comma = true;
+        continue;
+      }
+      cur.push_back(ch);
+    }
+    const auto ws = text::words(cur);
+    for (size_t k = 0; k < ws.size(); ++k) {
+      w.push_back(ws[k]);
+      comma.push_back(k == 0 && pending_comma);
+    }
+    for (const auto& c : clauses(w, comma)) {
+      Instruction in = classify(c);
+      if (in.kind == "add" && std::find(add_verbs().begin(), add_verbs().end(), c.front()) != add_verbs().end()) {
+        const auto parts = split_additions(text::words(in.text));
+        if (parts.size() > 1) {
+          for (const auto& p : parts) {
+            Instruction part = in;
+            part.text = text::join(p);
+            out.push_back(part);
+          }
+          continue;
+        }
+      }
+      out.push_back(in);
+    }
+  }
+  return out;
+}
+
+nlohmann::json to_json(const std::vector<Instruction>& instructions) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& i : instructions) {
+    nlohmann::json j{{"kind", i.kind}, {"text", i.text}};
+    if (!i.target.empty()) j["target"] = i.target;
+    if (i.count != 1) j["count"] = i.count;
+    list.push_back(j);
+  }
+  return {{"instructions", list}};
+}
+
+std::vector<Instruction> instructions_from_json(const nlohmann::json& j) {
+  std::vector<Instruction> out;
+  for (const auto& i : j.value("instructions", nlohmann::json::array()))
+    out.push_back({i.value("kind", "unclear"), i.value("text", ""), i.value("target", ""), i.value("count", 1)});
+  return out;
+}
+
+}  // namespace chatsim::agents::manager

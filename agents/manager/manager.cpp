@@ -1,0 +1,443 @@
+#include "agents/manager/manager.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "agents/core/scene_cache.hpp"
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+
+namespace chatsim::agents::manager {
+namespace {
+
+using nlohmann::json;
+
+std::string strip_reference(const std::string& text, const std::string& reference) {
+  std::vector<std::string> w = text::words(text);
+  std::vector<std::string> drop;
+  if (reference == "both" || reference == "them") drop = {"both of them", "all of them", "each of them", "both", "them", "they"};
+  else drop = {reference, "it"};
+  for (const auto& d : drop) {
+    const size_t n = text::words(d).size();
+    for (size_t at = text::find_phrase(w, d); at != std::string::npos; at = text::find_phrase(w, d))
+      w.erase(w.begin() + long(at), w.begin() + long(at + n));
+  }
+  return text::join(w);
+}
+
+json anchor_json(const AddedVehicle& a) {
+  const auto& p0 = a.trajectory.front();
+  return {{"id", a.id}, {"x", p0["x"]}, {"y", p0["y"]}, {"yaw", p0["yaw"]}, {"size_lwh", a.asset["size_lwh"]},
+          {"speed_mps", a.speed_mps}, {"wrong_way", a.resolved.value("wrong_way", false)}};
+}
+
+}  // namespace
+
+struct Manager::Round {
+  json instructions = json::array();
+  std::vector<std::string> done;
+  std::vector<int> added_now;
+};
+
+Manager::Manager(AgentCaller caller, std::shared_ptr<llm::Backend> backend)
+    : caller_(std::move(caller)), backend_(std::move(backend)) {}
+
+void Manager::reset(const std::string& id) {
+  std::lock_guard lock(mu_);
+  conversations_.erase(id);
+}
+
+AgentOutcome Manager::call(const std::string& kind, const Conversation& c, const std::string& action, json args) {
+  return caller_(kind, AgentCall{action, c.scene_dir, std::move(args)});
+}
+
+ChatResult Manager::chat(const std::string& id, const std::string& scene_dir, const std::string& command) {
+  std::lock_guard lock(mu_);
+  const auto scene = cached_scene(scene_dir);  // a bad scene fails here, with file and field
+  Conversation& c = conversations_[id];
+  if (!c.scene_dir.empty() && c.scene_dir != scene_dir) c = Conversation{};
+  c.scene_dir = scene_dir;
+  Round round;
+  const std::string trimmed = command.substr(0, 2000);
+  std::vector<Instruction> instructions;
+  if (text::words(trimmed).empty()) {
+    instructions.push_back({"unclear", command, "", 1});
+  } else {
+    instructions = instructions_from_json(backend_->complete(llm::prompt_for("manager"), trimmed));
+  }
+  if (command.size() > 2000)
+    c.unresolved.push_back({{"instruction", command.substr(0, 80) + "..."},
+                            {"reason", "the command is " + std::to_string(command.size()) +
+                                           " characters long; only the first 2000 were read"}});
+  // The paper's order: view first, then deletions, then vehicles in the order said.
+  std::stable_sort(instructions.begin(), instructions.end(), [](const Instruction& a, const Instruction& b) {
+    auto phase = [](const std::string& k) { return k == "view" ? 0 : (k == "delete" || k == "restore") ? 1 : 2; };
+    return phase(a.kind) < phase(b.kind);
+  });
+  for (const auto& in : instructions) {
+    round.instructions.push_back(in.kind + ": " + in.text);
+    run_instruction(c, in, round);
+  }
+  if (!round.added_now.empty()) c.last_group = round.added_now;
+  c.rounds.push_back({{"command", command}, {"instructions", round.instructions}});
+  ChatResult out;
+  out.edit_state = edit_state(c);
+  std::ostringstream msg;
+  for (size_t i = 0; i < round.done.size(); ++i) msg << (i ? " " : "") << round.done[i];
+  out.message = msg.str();
+  if (out.message.empty()) out.message = "Nothing was changed.";
+  (void)scene;
+  return out;
+}
+
+void Manager::run_instruction(Conversation& c, const Instruction& in, Round& round) {
+  const size_t before = c.unresolved.size();
+  if (in.kind == "view") do_view(c, in, round);
+  else if (in.kind == "delete") do_delete(c, in, round);
+  else if (in.kind == "restore") do_restore(c, in, round);
+  else if (in.kind == "add") do_add(c, in, round);
+  else if (in.kind == "revise") do_revise(c, in, round);
+  else if (in.kind == "remove_added") do_remove_added(c, in, round);
+  else if (in.kind == "traffic_jam" || in.kind == "busy_road" || in.kind == "construction_zone") do_abstract(c, in, round);
+  else
+    c.unresolved.push_back({{"instruction", in.text},
+                            {"reason", "not understood as an edit (add, delete, put back or revise a vehicle, or move "
+                                       "the view); try e.g. 'add a red car 20 m ahead'"}});
+  for (size_t i = before; i < c.unresolved.size(); ++i)
+    round.done.push_back("Not done: '" + c.unresolved[i]["instruction"].get<std::string>() + "': " +
+                         c.unresolved[i]["reason"].get<std::string>() + ".");
+}
+
+void Manager::do_view(Conversation& c, const Instruction& in, Round& round) {
+  const auto out = call("view", c, "adjust", {{"instruction", in.text}, {"view", c.view}});
+  if (!out.ok) throw std::runtime_error("view agent: " + out.message);
+  if (out.result["change"].empty()) {
+    c.unresolved.push_back({{"instruction", in.text}, {"reason", "no distance, angle or ego motion found to apply to the view"}});
+    return;
+  }
+  c.view = out.result["view"];
+  round.done.push_back("View: " + out.result["change"].dump() + ".");
+}
+
+void Manager::do_delete(Conversation& c, const Instruction& in, Round& round) {
+  const auto out = call("deletion", c, "select", {{"instruction", in.text}, {"removed", c.removed}});
+  if (!out.ok) throw std::runtime_error("deletion agent: " + out.message);
+  const auto ids = out.result["ids"].get<std::vector<std::string>>();
+  if (ids.empty()) {
+    // Maybe it names a vehicle added earlier ("remove the police car").
+    const auto added = resolve(c, reference_in(in.text));
+    const auto w = text::words(in.text);
+    if (!added.empty() && !lexicon::find_types(w).empty() && reference_in(in.text) != "it") {
+      do_remove_added(c, {"remove_added", in.text, reference_in(in.text), 1}, round);
+      return;
+    }
+  }
+  for (const auto& p : out.result["problems"]) c.unresolved.push_back({{"instruction", in.text}, {"reason", p}});
+  if (ids.empty()) return;
+  c.removed.insert(c.removed.end(), ids.begin(), ids.end());
+  c.removal_batches.push_back(ids);
+  std::string list;
+  for (const auto& id : ids) list += (list.empty() ? "" : ", ") + id;
+  round.done.push_back("Removed " + std::to_string(ids.size()) + " object(s): " + list + ".");
+}
+
+void Manager::do_restore(Conversation& c, const Instruction& in, Round& round) {
+  if (c.removal_batches.empty()) {
+    c.unresolved.push_back({{"instruction", in.text}, {"reason", "nothing has been deleted in this conversation"}});
+    return;
+  }
+  const bool all = text::has_any(text::words(in.text), {"all", "every", "everything"});
+  std::vector<std::string> back;
+  while (!c.removal_batches.empty()) {
+    back.insert(back.end(), c.removal_batches.back().begin(), c.removal_batches.back().end());
+    c.removal_batches.pop_back();
+    if (!all) break;
+  }
+  for (const auto& id : back) c.removed.erase(std::remove(c.removed.begin(), c.removed.end(), id), c.removed.end());
+  round.done.push_back("Put back " + std::to_string(back.size()) + " object(s).");
+}
+
+json Manager::others_json(const Conversation& c, int except) const {
+  json others = json::array();
+  for (size_t i = 0; i < c.added.size(); ++i) {
+    if (int(i) == except) continue;
+    others.push_back({{"id", c.added[i].id}, {"size_lwh", c.added[i].asset["size_lwh"]}, {"trajectory", c.added[i].trajectory}});
+  }
+  return others;
+}
+
+bool Manager::add_one(Conversation& c, const json& asset_args, const json& motion_said, const std::string& text,
+                      Round& round, bool strict) {
+  const auto asset = call("asset", c, "choose", asset_args);
+  if (!asset.ok) throw std::runtime_error("asset agent: " + asset.message);
+  const json choice = asset.result["choice"];
+  json args{{"intent", motion_said}, {"size_lwh", choice["size_lwh"]}, {"type", choice["type"]},
+            {"removed", c.removed}, {"others", others_json(c, -1)}, {"strict", strict}};
+  if (motion_said.contains("relative")) {
+    const auto ref = resolve(c, motion_said["relative"].value("to", "it"));
+    if (ref.empty()) {
+      c.unresolved.push_back({{"instruction", text}, {"reason", "no added vehicle matches '" +
+                                                                   motion_said["relative"].value("to", "") +
+                                                                   "' to place it relative to"}});
+      return false;
+    }
+    args["anchor"] = anchor_json(c.added[size_t(ref.front())]);
+  }
+  const auto plan = call("motion", c, "plan", args);
+  if (!plan.ok) {
+    c.unresolved.push_back({{"instruction", text}, {"reason", plan.message}});
+    return false;
+  }
+  AddedVehicle v;
+  v.id = "added_" + std::to_string(c.next_id++);
+  v.asset = choice;
+  v.intent = plan.result["intent"];
+  // Later rounds must find the same anchor, whatever "it" means by then.
+  if (args.contains("anchor") && v.intent.contains("relative")) v.intent["relative"]["to"] = args["anchor"]["id"];
+  v.resolved = plan.result["resolved"];
+  v.trajectory = plan.result["trajectory"];
+  v.speed_mps = plan.result["speed_mps"];
+  v.lane = plan.result["lane"];
+  for (const auto& n : plan.result["notes"]) c.notes.push_back(v.id + ": " + n.get<std::string>());
+  if (choice.contains("note")) c.notes.push_back(v.id + ": " + choice["note"].get<std::string>());
+  c.added.push_back(v);
+  c.last_ref = int(c.added.size()) - 1;
+  round.added_now.push_back(c.last_ref);
+  round.done.push_back("Added " + v.id + " (" + choice["asset"].get<std::string>() + ", " +
+                       v.resolved.value("action", "straight") + (v.lane.empty() ? "" : ", lane " + v.lane) + ").");
+  return true;
+}
+
+void Manager::do_add(Conversation& c, const Instruction& in, Round& round) {
+  json asset_args{{"instruction", in.text}};
+  if (!in.target.empty()) {  // "another one": a copy of the referenced vehicle
+    const auto ref = resolve(c, in.target);
+    if (!ref.empty()) asset_args["base"] = c.added[size_t(ref.front())].asset;
+  }
+  // Ask the asset agent once for the count before planning any.
+  const auto probe = call("asset", c, "choose", asset_args);
+  if (!probe.ok) throw std::runtime_error("asset agent: " + probe.message);
+  const int count = probe.result["request"].value("count", 1);
+  if (count > kMaxAddedPerInstruction) {
+    c.unresolved.push_back({{"instruction", in.text},
+                            {"reason", "asked for " + std::to_string(count) + " vehicles; at most " +
+                                           std::to_string(kMaxAddedPerInstruction) +
+                                           " fit on the lanes of one scene at once, so none were added"}});
+    return;
+  }
+  const auto decided = call("motion", c, "decide", {{"instruction", in.text}});
+  if (!decided.ok) throw std::runtime_error("motion agent: " + decided.message);
+  json args = asset_args;
+  args["request"] = probe.result["request"];
+  for (int k = 0; k < count; ++k)
+    if (!add_one(c, args, decided.result["intent"], in.text, round)) break;
+}
+
+void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
+  const auto targets = resolve(c, in.target);
+  if (targets.empty()) {
+    c.unresolved.push_back({{"instruction", in.text},
+                            {"reason", c.added.empty() ? "no vehicle has been added yet, and recorded vehicles can only be "
+                                                         "deleted, not changed"
+                                                       : "no added vehicle matches '" + in.target + "'"}});
+    return;
+  }
+  const std::string rest = strip_reference(in.text, in.target);
+  const auto decided = call("motion", c, "decide", {{"instruction", rest}});
+  if (!decided.ok) throw std::runtime_error("motion agent: " + decided.message);
+  json said = decided.result["intent"];
+  bool changed_any = false;
+  for (int t : targets) {
+    AddedVehicle& v = c.added[size_t(t)];
+    const auto asset = call("asset", c, "choose", {{"instruction", rest}, {"base", v.asset}});
+    if (!asset.ok) throw std::runtime_error("asset agent: " + asset.message);
+    json req = asset.result["request"];
+    req.erase("count");
+    const bool asset_changed = !req.empty();
+    if (!asset_changed && said.empty()) continue;
+    changed_any = true;
+    const bool resized = asset_changed && asset.result["choice"]["size_lwh"] != v.asset["size_lwh"];
+    if (asset_changed) v.asset = asset.result["choice"];
+    if (said.empty() && !resized) {  // a new colour or brand of the same size: the motion stands
+      round.done.push_back("Revised " + v.id + ".");
+      continue;
+    }
+    json args{{"base_intent", v.intent}, {"intent", said}, {"size_lwh", v.asset["size_lwh"]},
+              {"type", v.asset["type"]}, {"removed", c.removed}, {"others", others_json(c, t)}};
+    json merged_rel = said.contains("relative") ? said["relative"] : (said.contains("placement") ? json() : v.intent.value("relative", json()));
+    if (!merged_rel.is_null()) {
+      auto ref = resolve(c, merged_rel.value("to", "it"));
+      ref.erase(std::remove(ref.begin(), ref.end(), t), ref.end());
+      if (!ref.empty()) {
+        args["anchor"] = anchor_json(c.added[size_t(ref.front())]);
+      } else {
+        // The anchor is gone: keep the vehicle where it starts now.
+        args["base_intent"].erase("relative");
+        args["intent"].erase("relative");
+      }
+    }
+    const auto plan = call("motion", c, "plan", args);
+    if (!plan.ok) {
+      c.unresolved.push_back({{"instruction", in.text}, {"reason", v.id + ": " + plan.message}});
+      continue;
+    }
+    v.intent = plan.result["intent"];
+    v.resolved = plan.result["resolved"];
+    v.trajectory = plan.result["trajectory"];
+    v.speed_mps = plan.result["speed_mps"];
+    v.lane = plan.result["lane"];
+    for (const auto& n : plan.result["notes"]) c.notes.push_back(v.id + ": " + n.get<std::string>());
+    round.done.push_back("Revised " + v.id + ".");
+  }
+  if (!changed_any)
+    c.unresolved.push_back({{"instruction", in.text}, {"reason", "found nothing to change (colour, type, placement, speed or action)"}});
+  c.last_ref = targets.back();
+  if (targets.size() > 1) c.last_group = targets;
+}
+
+void Manager::do_remove_added(Conversation& c, const Instruction& in, Round& round) {
+  auto targets = resolve(c, in.target.empty() ? reference_in(in.text) : in.target);
+  if (targets.empty()) {
+    c.unresolved.push_back({{"instruction", in.text}, {"reason", "no added vehicle matches '" + in.target + "'"}});
+    return;
+  }
+  std::sort(targets.rbegin(), targets.rend());
+  for (int t : targets) {
+    round.done.push_back("Removed " + c.added[size_t(t)].id + ".");
+    c.added.erase(c.added.begin() + t);
+  }
+  c.last_ref = c.added.empty() ? -1 : int(c.added.size()) - 1;
+  c.last_group.clear();
+}
+
+void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) {
+  static const char* kinds[] = {"car", "suv", "van", "car", "car", "suv", "car", "van", "car", "car"};
+  static const char* colors[] = {"white", "black", "silver", "red", "blue", "gray", "white", "green", "black", "yellow"};
+  int placed = 0, wanted = 0;
+  auto add = [&](const std::string& what, const json& intent) {
+    ++wanted;
+    const json asset_args{{"instruction", "add a " + what}};
+    if (add_one(c, asset_args, intent, in.text + " (" + what + ")", round, true)) ++placed;
+    else c.unresolved.erase(c.unresolved.end() - 1);  // one vehicle fewer is not a failure of the request
+  };
+  if (in.kind == "traffic_jam") {
+    for (int k = 0; k < 8; ++k)
+      add(std::string(colors[k]) + " " + kinds[k], {{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}});
+  } else if (in.kind == "busy_road") {
+    static const char* where[] = {"front", "left_front", "back", "front", "left_front", "back", "front", "left_front", "front", "back"};
+    for (int k = 0; k < 10; ++k)
+      add(std::string(colors[k]) + " " + kinds[k],
+          {{"placement", where[k]}, {"direction", k % 2 ? "toward" : "away"}, {"action", "straight"}});
+  } else {
+    for (int k = 0; k < 6; ++k)
+      add(k < 4 ? "traffic cone" : "road barrier",
+          {{"placement", "front"}, {"distance_m", 14.0 + 3.0 * k}, {"action", "static"}});
+  }
+  if (placed == 0)
+    c.unresolved.push_back({{"instruction", in.text}, {"reason", "no free place on the lanes for any vehicle"}});
+  else if (placed < wanted)
+    c.notes.push_back(in.kind + ": placed " + std::to_string(placed) + " of " + std::to_string(wanted) +
+                      " vehicles; the rest had no free place");
+}
+
+std::vector<int> Manager::resolve(const Conversation& c, const std::string& reference) const {
+  std::vector<int> out;
+  const int n = int(c.added.size());
+  if (n == 0) return out;
+  for (int i = 0; i < n; ++i)
+    if (c.added[size_t(i)].id == reference) return {i};
+  const auto w = text::words(reference);
+  if (reference == "both" || text::has_phrase(w, "both")) {
+    if (c.last_group.size() >= 2) return c.last_group;
+    for (int i = std::max(0, n - 2); i < n; ++i) out.push_back(i);
+    return out;
+  }
+  if (reference == "them" || text::has_any(w, {"them", "they", "all added", "all the added"})) {
+    if (!c.last_group.empty()) return c.last_group;
+    for (int i = 0; i < n; ++i) out.push_back(i);
+    return out;
+  }
+  const auto brands = lexicon::find_brands(w);
+  const auto types = lexicon::find_types(w);
+  static const char* ordinals[] = {"first", "second", "third", "fourth", "fifth"};
+  for (int k = 0; k < 5; ++k)
+    if (text::has_phrase(w, ordinals[k]) && k < n) return {k};
+  if (text::has_phrase(w, "last")) return {n - 1};
+  for (int i = n - 1; i >= 0; --i) {
+    const auto& a = c.added[size_t(i)].asset;
+    const auto bw = a.value("brand_words", std::vector<std::string>{});
+    if (!brands.empty()) {
+      if (std::find(bw.begin(), bw.end(), brands.front().brand) != bw.end()) return {i};
+      continue;
+    }
+    if (!types.empty() && types.front().type.type != "car" && types.front().type.type != "object") {
+      if (a.value("type", "") == types.front().type.type) return {i};
+      continue;
+    }
+    // "it", "the added car", "the new one": the one spoken about last.
+    if (c.last_ref >= 0 && c.last_ref < n) return {c.last_ref};
+    return {n - 1};
+  }
+  return out;
+}
+
+json Manager::edit_state(const Conversation& c) const {
+  const auto scene = cached_scene(c.scene_dir);
+  json added = json::array();
+  for (const auto& v : c.added) {
+    json intent = v.resolved;
+    intent["lane"] = v.lane;
+    intent["speed_mps"] = v.speed_mps;
+    added.push_back({{"id", v.id}, {"asset", v.asset["asset"]}, {"type", v.asset["type"]},
+                     {"category", v.asset["category"]}, {"brand_words", v.asset["brand_words"]},
+                     {"color_rgb", v.asset["color_rgb"]}, {"size_lwh", v.asset["size_lwh"]},
+                     {"trajectory", v.trajectory}, {"intent", intent}});
+  }
+  json view = c.view.empty() ? json{{"translation_m", {0, 0, 0}}, {"yaw_deg", 0}, {"pitch_deg", 0}, {"ego_motion", "none"}}
+                             : c.view;
+  return {{"scene", scene->name}, {"view", view},      {"removed", c.removed}, {"added", added},
+          {"rounds", c.rounds},   {"unresolved", c.unresolved}, {"notes", c.notes}};
+}
+
+namespace {
+
+class ManagerAgent : public Agent {
+ public:
+  ManagerAgent(AgentCaller caller, std::shared_ptr<llm::Backend> backend) : manager_(std::move(caller), std::move(backend)) {}
+  const std::string& kind() const override {
+    static const std::string k = "manager";
+    return k;
+  }
+  AgentOutcome handle(const AgentCall& call) override {
+    const std::string id = call.args.value("conversation_id", std::string("default"));
+    if (call.action == "reset") {
+      manager_.reset(id);
+      return AgentOutcome::success({{"message", "conversation reset"}});
+    }
+    if (call.action != "chat")
+      return AgentOutcome::failure(ErrorKind::BadRequest, "manager has no action '" + call.action + "' (actions: chat, reset)");
+    if (call.scene.empty())
+      return AgentOutcome::failure(ErrorKind::BadRequest, "no scene given: pass the scene directory (--scene DIR)");
+    try {
+      const auto r = manager_.chat(id, call.scene, call.args.value("command", std::string()));
+      return AgentOutcome::success({{"message", r.message}, {"edit_state", r.edit_state}});
+    } catch (const scene::SceneError& e) {
+      return AgentOutcome::failure(ErrorKind::BadRequest, std::string("bad scene: ") + e.what());
+    } catch (const llm::BackendError& e) {
+      return AgentOutcome::failure(ErrorKind::Unavailable, std::string("manager's language model failed: ") + e.what());
+    } catch (const std::exception& e) {
+      return AgentOutcome::failure(ErrorKind::Unavailable, e.what());
+    }
+  }
+
+ private:
+  Manager manager_;
+};
+
+}  // namespace
+
+std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend) {
+  return std::make_unique<ManagerAgent>(std::move(caller), std::move(backend));
+}
+
+}  // namespace chatsim::agents::manager

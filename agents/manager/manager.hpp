@@ -1,0 +1,87 @@
+#pragma once
+// The project manager: decomposes each command, routes the instructions to the view, deletion,
+// asset and motion agents (through a caller, so the same logic runs in-process or over the bus),
+// resolves references across rounds, and keeps each conversation's edit state.
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "agents/core/agent.hpp"
+#include "agents/llm/llm_backend.hpp"
+#include "agents/manager/decompose.hpp"
+
+namespace chatsim::agents::manager {
+
+using AgentCaller = std::function<AgentOutcome(const std::string& kind, const AgentCall& call)>;
+
+struct AddedVehicle {
+  std::string id;
+  nlohmann::json asset;        // asset agent's choice
+  nlohmann::json intent;       // what was said, merged over rounds (motion intent)
+  nlohmann::json resolved;     // the intent as planned, every default filled in
+  nlohmann::json trajectory;   // [{t_s, x, y, yaw}]
+  double speed_mps = 0;
+  std::string lane;
+};
+
+struct Conversation {
+  std::string scene_dir;
+  nlohmann::json view = nlohmann::json::object();
+  std::vector<std::string> removed;
+  std::vector<std::vector<std::string>> removal_batches;  // for "put back the deleted car"
+  std::vector<AddedVehicle> added;
+  nlohmann::json rounds = nlohmann::json::array();
+  nlohmann::json unresolved = nlohmann::json::array();
+  nlohmann::json notes = nlohmann::json::array();
+  int next_id = 1;
+  int last_ref = -1;           // the vehicle "it" means
+  std::vector<int> last_group; // the vehicles "them"/"both" mean
+};
+
+struct ChatResult {
+  nlohmann::json edit_state;
+  std::string message;         // one paragraph for the user: what was done, what was not
+};
+
+class Manager {
+ public:
+  static constexpr int kMaxAddedPerInstruction = 40;
+
+  Manager(AgentCaller caller, std::shared_ptr<llm::Backend> backend);
+
+  // One round of a conversation. Throws std::runtime_error for a bad scene or a failed agent.
+  ChatResult chat(const std::string& conversation_id, const std::string& scene_dir, const std::string& command);
+  void reset(const std::string& conversation_id);
+
+ private:
+  struct Round;
+  void run_instruction(Conversation& c, const Instruction& in, Round& round);
+  void do_view(Conversation& c, const Instruction& in, Round& round);
+  void do_delete(Conversation& c, const Instruction& in, Round& round);
+  void do_restore(Conversation& c, const Instruction& in, Round& round);
+  void do_add(Conversation& c, const Instruction& in, Round& round);
+  void do_revise(Conversation& c, const Instruction& in, Round& round);
+  void do_remove_added(Conversation& c, const Instruction& in, Round& round);
+  void do_abstract(Conversation& c, const Instruction& in, Round& round);
+  bool add_one(Conversation& c, const nlohmann::json& asset_args, const nlohmann::json& motion_args,
+               const std::string& text, Round& round, bool strict = false);
+  std::vector<int> resolve(const Conversation& c, const std::string& reference) const;
+  nlohmann::json others_json(const Conversation& c, int except) const;
+  nlohmann::json edit_state(const Conversation& c) const;
+  AgentOutcome call(const std::string& kind, const Conversation& c, const std::string& action, nlohmann::json args);
+
+  AgentCaller caller_;
+  std::shared_ptr<llm::Backend> backend_;
+  std::mutex mu_;
+  std::map<std::string, Conversation> conversations_;
+};
+
+// The manager as an Agent: action "chat" (args: command, conversation_id) and "reset".
+std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend);
+
+}  // namespace chatsim::agents::manager

@@ -1,0 +1,42 @@
+#pragma once
+// The motion agent's configuration: where a vehicle starts and how it moves. Parsed from an
+// instruction (only what the instruction says), merged over an earlier intent for revisions,
+// and completed with defaults when planned.
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace chatsim::agents::motion {
+
+struct RelativePlacement {
+  std::string to;        // reference as said: "it", "the added car", "the porsche"
+  std::string region;    // front, back, left, right
+};
+
+struct MotionIntent {
+  std::optional<std::string> placement;   // front, left_front, right_front, left, right, back
+  std::optional<double> distance_m;
+  std::optional<std::string> distance_word;  // close, far
+  std::optional<std::string> lane;        // ego, left, right, oncoming, parking
+  std::optional<RelativePlacement> relative;
+  std::optional<std::string> action;      // straight, turn_left, turn_right, lane_change_left,
+                                          // lane_change_right, backward, static, cut_in
+  std::optional<std::string> speed;       // slow, normal, fast, faster, slower
+  std::optional<double> speed_mps;
+  std::optional<std::string> direction;   // toward, away
+  std::optional<bool> wrong_way;
+  std::optional<bool> chase;              // "chasing", "following": match the target's speed
+
+  // Fields set in `over` replace ours (a revision).
+  void merge(const MotionIntent& over);
+  bool empty() const;
+};
+
+nlohmann::json to_json(const MotionIntent& intent);
+MotionIntent intent_from_json(const nlohmann::json& j);
+
+// The offline interpreter: what an English instruction says about motion and placement.
+MotionIntent parse_motion(const std::string& instruction);
+
+}  // namespace chatsim::agents::motion

@@ -1,0 +1,171 @@
+#include "agents/motion/path.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace chatsim::agents::motion {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double wrap(double a) { return std::remainder(a, 2 * kPi); }
+
+Eigen::Vector2d dir_of(double yaw) { return {std::cos(yaw), std::sin(yaw)}; }
+
+}  // namespace
+
+void Path::push(const Eigen::Vector2d& p) {
+  if (!points.empty() && (p - points.back()).norm() < 1e-6) return;
+  s.push_back(points.empty() ? 0.0 : s.back() + (p - points.back()).norm());
+  points.push_back(p);
+}
+
+Eigen::Vector2d Path::at(double q) const {
+  if (points.size() < 2) return points.empty() ? Eigen::Vector2d::Zero() : points[0];
+  if (q >= s.back()) {  // beyond the end: continue straight
+    const Eigen::Vector2d d = (points.back() - points[points.size() - 2]).normalized();
+    return points.back() + (q - s.back()) * d;
+  }
+  if (q <= 0) return points[0];
+  const size_t i = size_t(std::upper_bound(s.begin(), s.end(), q) - s.begin()) - 1;
+  const double t = (q - s[i]) / (s[i + 1] - s[i]);
+  return points[i] + t * (points[i + 1] - points[i]);
+}
+
+double Path::yaw_at(double q) const {
+  if (points.size() < 2) return 0;
+  // Direction over a short window, so polyline corners do not make the yaw jump.
+  const double h = 0.75;
+  const double a = std::max(0.0, q - h), b = std::max(q + h, a + 0.1);
+  const Eigen::Vector2d d = at(b) - at(a);
+  return std::atan2(d.y(), d.x());
+}
+
+double Path::curvature_at(double q) const {
+  const double h = 1.0;
+  const double dyaw = wrap(yaw_at(q + h) - yaw_at(q - h));
+  return std::abs(dyaw) / (2 * h);
+}
+
+Path lane_path(const scene::LaneMap& map, int lane, double s0, int dir, double length, double step) {
+  Path path;
+  const double end_s = dir > 0 ? map.lanes()[size_t(lane)].length() : 0.0;
+  double q = s0;
+  double travelled = 0;
+  while (travelled <= length) {
+    if ((dir > 0 && q > end_s) || (dir < 0 && q < end_s)) break;
+    path.push(map.point_at(lane, q));
+    q += dir * step;
+    travelled += step;
+  }
+  if (travelled <= length) {  // the lane ended: go on straight
+    const double yaw = map.tangent_yaw_at(lane, end_s) + (dir > 0 ? 0 : kPi);
+    const Eigen::Vector2d last = map.point_at(lane, end_s);
+    for (double extra = step; travelled <= length; extra += step, travelled += step) path.push(last + extra * dir_of(yaw));
+  }
+  return path;
+}
+
+void append_hermite(Path& path, const Eigen::Vector2d& to, double to_yaw, double step) {
+  const Eigen::Vector2d from = path.points.back();
+  const double from_yaw = path.yaw_at(path.length());
+  const double chord = (to - from).norm();
+  const Eigen::Vector2d m0 = chord * 1.2 * dir_of(from_yaw), m1 = chord * 1.2 * dir_of(to_yaw);
+  const int n = std::max(4, int(std::ceil(chord * 1.6 / step)));
+  for (int i = 1; i <= n; ++i) {
+    const double t = double(i) / n, t2 = t * t, t3 = t2 * t;
+    path.push((2 * t3 - 3 * t2 + 1) * from + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * to + (t3 - t2) * m1);
+  }
+}
+
+std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length) {
+  const double travel_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
+  const double radius = 9.0;
+  for (const auto& c : map.crossings(lane)) {
+    const double ahead = dir * (c.s_self - s0);
+    if (ahead < radius + 1) continue;  // too close to turn smoothly
+    const auto& other = map.lanes()[size_t(c.other)];
+    if (other.type != "driving") continue;
+    const double other_yaw = map.travel_yaw_at(c.other, c.s_other);
+    const double want = wrap(travel_yaw + sign * kPi / 2);
+    if (std::abs(wrap(other_yaw - want)) > kPi / 6) continue;
+    // Legal travel on the other lane runs along its polyline unless it is a backward lane.
+    const int other_dir = other.direction == scene::TrafficDirection::Backward ? -1 : 1;
+    const double exit_s = c.s_other + other_dir * radius;
+    if (exit_s < 0 || exit_s > other.length()) continue;
+    TurnPlan plan;
+    plan.path = lane_path(map, lane, s0, dir, ahead - radius);
+    append_hermite(plan.path, map.point_at(c.other, exit_s), other_yaw);
+    const Path rest = lane_path(map, c.other, exit_s, other_dir, std::max(0.0, length - plan.path.length()));
+    for (const auto& p : rest.points) plan.path.push(p);
+    plan.target_lane = other.id;
+    return plan;
+  }
+  return std::nullopt;
+}
+
+LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length,
+                                double start_after_m, double change_length_m) {
+  LaneChangePlan plan;
+  const Path base = lane_path(map, lane, s0, dir, length);
+  const Eigen::Vector2d p0 = base.at(0);
+  const double yaw0 = base.yaw_at(0);
+  const Eigen::Vector2d normal(-std::sin(yaw0), std::cos(yaw0));  // left of travel
+  // The neighbouring lane in the same travel direction, one lane to that side.
+  double offset = sign * map.lanes()[size_t(lane)].width;
+  double best = 1e9;
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    if (int(i) == lane || map.lanes()[i].type != "driving") continue;
+    const auto pos = map.project(int(i), p0);
+    const Eigen::Vector2d q = map.point_at(int(i), pos.s);
+    const double lateral = (q - p0).dot(normal);
+    if (sign * lateral < 1.5 || sign * lateral > 6.0) continue;
+    if (std::abs(wrap(map.travel_yaw_at(int(i), pos.s) - yaw0)) > kPi / 4) continue;
+    if (std::abs(lateral) < best) {
+      best = std::abs(lateral);
+      offset = lateral;
+      plan.target_lane = map.lanes()[i].id;
+    }
+  }
+  for (size_t i = 0; i < base.points.size(); ++i) {
+    const double u = std::clamp((base.s[i] - start_after_m) / change_length_m, 0.0, 1.0);
+    const double blend = u * u * u * (10 - 15 * u + 6 * u * u);  // quintic smoothstep: zero end slopes
+    const double yaw = base.yaw_at(base.s[i]);
+    plan.path.push(base.points[i] + blend * offset * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw)));
+  }
+  return plan;
+}
+
+std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times, double a_lat,
+                                   double a_long) {
+  std::vector<double> out;
+  out.reserve(times.size());
+  if (v_desired <= 0 || path.points.size() < 2) {
+    out.assign(times.size(), 0.0);
+    return out;
+  }
+  // Speed limit per metre of path from curvature, then acceleration limits both ways.
+  const double ds = 0.5;
+  const size_t n = size_t(std::ceil(path.length() / ds)) + 2;
+  std::vector<double> v(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double k = path.curvature_at(double(i) * ds);
+    v[i] = std::min(v_desired, k > 1e-6 ? std::sqrt(a_lat / k) : v_desired);
+  }
+  for (size_t i = n - 1; i-- > 0;) v[i] = std::min(v[i], std::sqrt(v[i + 1] * v[i + 1] + 2 * a_long * ds));
+  for (size_t i = 1; i < n; ++i) v[i] = std::min(v[i], std::sqrt(v[i - 1] * v[i - 1] + 2 * a_long * ds));
+  double s = 0, t = times.empty() ? 0 : times.front();
+  const double dt = 0.005;
+  for (const double target : times) {
+    while (t + 1e-12 < target) {
+      const size_t i = std::min(n - 1, size_t(s / ds));
+      s += std::max(v[i], 0.05) * dt;
+      t += dt;
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace chatsim::agents::motion

@@ -1,0 +1,160 @@
+#include "agents/view/view.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "agents/language/text.hpp"
+
+namespace chatsim::agents::view {
+namespace {
+
+using Words = std::vector<std::string>;
+
+// The axis and sign a direction word means, or none.
+std::optional<std::pair<int, double>> direction_word(const std::string& w) {
+  if (w == "ahead" || w == "forward" || w == "forwards" || w == "front" || w == "further") return std::pair{0, 1.0};
+  if (w == "back" || w == "backward" || w == "backwards" || w == "behind" || w == "rear" || w == "backs") return std::pair{0, -1.0};
+  if (w == "left") return std::pair{1, 1.0};
+  if (w == "right") return std::pair{1, -1.0};
+  if (w == "up" || w == "upward" || w == "upwards" || w == "higher" || w == "above" || w == "raise" || w == "raised" ||
+      w == "lift" || w == "elevate" || w == "raising")
+    return std::pair{2, 1.0};
+  if (w == "down" || w == "downward" || w == "downwards" || w == "lower" || w == "below" || w == "lowered" ||
+      w == "drop" || w == "lowering")
+    return std::pair{2, -1.0};
+  return std::nullopt;
+}
+
+}  // namespace
+
+ViewChange parse_view(const std::string& instruction) {
+  const Words w = text::words(instruction);
+  ViewChange v;
+  if (text::has_any(w, {"reset the view", "original view", "reset view", "reset the camera", "default view"})) v.reset = true;
+  // Rotations: "30 degrees to the left", "look 15 degrees right", "tilt up 10 degrees".
+  const bool pitch = text::has_any(w, {"tilt", "pitch", "look up", "look down", "tilted", "tilts"});
+  for (const auto& q : text::quantities(w, {"degrees", "degree", "deg", "°"})) {
+    double sign = 0;
+    for (size_t i = q.end; i < std::min(w.size(), q.end + 4) && sign == 0; ++i) {
+      if (w[i] == "left" || w[i] == "up" || w[i] == "counterclockwise" || w[i] == "anticlockwise") sign = 1;
+      if (w[i] == "right" || w[i] == "down" || w[i] == "clockwise") sign = -1;
+    }
+    for (size_t i = q.begin; i-- > 0 && q.begin - i <= 4 && sign == 0;) {
+      if (w[i] == "left" || w[i] == "up") sign = 1;
+      if (w[i] == "right" || w[i] == "down") sign = -1;
+    }
+    if (sign == 0) sign = 1;  // unsaid: counter-clockwise, the mathematical sense
+    if (pitch) v.pitch_deg = v.pitch_deg.value_or(0) + sign * q.value;
+    else v.yaw_deg = v.yaw_deg.value_or(0) + sign * q.value;
+  }
+  // Translations: each distance with the direction word after it, else before it, else the verb.
+  const auto distances = text::quantities(w, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
+  for (size_t k = 0; k < distances.size(); ++k) {
+    const auto& q = distances[k];
+    const std::string unit = w[q.end - 1];
+    const double f = (unit == "feet" || unit == "foot" || unit == "ft") ? 0.3048 : (unit == "centimeters" || unit == "cm") ? 0.01 : 1.0;
+    std::optional<std::pair<int, double>> dir;
+    const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : w.size();
+    for (size_t i = q.end; i < std::min(next_start, q.end + 4) && !dir; ++i) dir = direction_word(w[i]);
+    const size_t prev_end = k > 0 ? distances[k - 1].end : 0;
+    for (size_t i = q.begin; i-- > prev_end && q.begin - i <= 5 && !dir;) dir = direction_word(w[i]);
+    if (!dir) continue;
+    if (!v.translation_m) v.translation_m = std::array<double, 3>{0, 0, 0};
+    (*v.translation_m)[size_t(dir->first)] += dir->second * q.value * f;
+  }
+  if (text::has_any(w, {"ego", "drive", "drives", "driving", "i drive", "we drive"}) &&
+      !text::has_any(w, {"camera", "view", "viewpoint"})) {
+    if (text::has_any(w, {"slowly", "slow", "crawl"})) v.ego_motion = "slow";
+    else if (text::has_any(w, {"fast", "quickly", "speed", "rapidly", "faster"})) v.ego_motion = "fast";
+    else if (text::has_any(w, {"stop", "stops", "stand still", "stationary", "static", "not move"})) v.ego_motion = "none";
+    else if (text::has_any(w, {"ahead", "forward", "drive", "drives"})) v.ego_motion = "slow";
+  }
+  return v;
+}
+
+nlohmann::json to_json(const ViewChange& v) {
+  nlohmann::json j = nlohmann::json::object();
+  if (v.translation_m) j["translation_m"] = *v.translation_m;
+  if (v.yaw_deg) j["yaw_deg"] = *v.yaw_deg;
+  if (v.pitch_deg) j["pitch_deg"] = *v.pitch_deg;
+  if (v.ego_motion) j["ego_motion"] = *v.ego_motion;
+  if (v.reset) j["reset"] = true;
+  return j;
+}
+
+ViewChange view_change_from_json(const nlohmann::json& j) {
+  ViewChange v;
+  if (!j.is_object()) return v;
+  if (j.contains("translation_m")) v.translation_m = j["translation_m"].get<std::array<double, 3>>();
+  if (j.contains("yaw_deg")) v.yaw_deg = j["yaw_deg"].get<double>();
+  if (j.contains("pitch_deg")) v.pitch_deg = j["pitch_deg"].get<double>();
+  if (j.contains("ego_motion")) v.ego_motion = j["ego_motion"].get<std::string>();
+  v.reset = j.value("reset", false);
+  return v;
+}
+
+ViewState apply(const ViewState& state, const ViewChange& c) {
+  ViewState out = c.reset ? ViewState{} : state;
+  if (c.translation_m)
+    for (size_t i = 0; i < 3; ++i) out.translation_m[i] += (*c.translation_m)[i];
+  if (c.yaw_deg) out.yaw_deg += *c.yaw_deg;
+  if (c.pitch_deg) out.pitch_deg += *c.pitch_deg;
+  if (c.ego_motion) out.ego_motion = *c.ego_motion;
+  return out;
+}
+
+nlohmann::json to_json(const ViewState& v) {
+  return {{"translation_m", v.translation_m}, {"yaw_deg", v.yaw_deg}, {"pitch_deg", v.pitch_deg},
+          {"ego_motion", v.ego_motion}};
+}
+
+ViewState view_state_from_json(const nlohmann::json& j) {
+  ViewState v;
+  if (!j.is_object()) return v;
+  v.translation_m = j.value("translation_m", v.translation_m);
+  v.yaw_deg = j.value("yaw_deg", 0.0);
+  v.pitch_deg = j.value("pitch_deg", 0.0);
+  v.ego_motion = j.value("ego_motion", std::string("none"));
+  return v;
+}
+
+double ego_speed_mps(const std::string& m) { return m == "slow" ? 3.0 : m == "fast" ? 15.0 : 0.0; }
+
+std::vector<std::vector<Eigen::Isometry3d>> camera_poses(const scene::Scene& scene, const ViewState& v) {
+  constexpr double kDeg = std::numbers::pi / 180;
+  Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+  offset.translation() = Eigen::Vector3d(v.translation_m[0], v.translation_m[1], v.translation_m[2]);
+  // Ego FLU: yaw about +z (left positive), pitch about -y (nose up positive).
+  offset.linear() = (Eigen::AngleAxisd(v.yaw_deg * kDeg, Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(-v.pitch_deg * kDeg, Eigen::Vector3d::UnitY()))
+                        .toRotationMatrix();
+  // Ego motion: distance along the recorded path from frame 0 at the chosen speed.
+  std::vector<double> path_s{0};
+  for (size_t i = 1; i < scene.frames.size(); ++i)
+    path_s.push_back(path_s.back() + (scene.frames[i].ego_to_world.translation() -
+                                      scene.frames[i - 1].ego_to_world.translation()).norm());
+  auto ego_at = [&](size_t f) -> Eigen::Isometry3d {
+    if (v.ego_motion == "none" || scene.frames.size() < 2) return scene.frames[f].ego_to_world;
+    const double s = ego_speed_mps(v.ego_motion) * (scene.frames[f].timestamp_s - scene.frames[0].timestamp_s);
+    size_t i = 0;
+    while (i + 2 < path_s.size() && path_s[i + 1] < s) ++i;
+    const double seg = path_s[i + 1] - path_s[i];
+    const double t = seg > 1e-9 ? (s - path_s[i]) / seg : 0.0;
+    const auto& a = scene.frames[i].ego_to_world;
+    const auto& b = scene.frames[i + 1].ego_to_world;
+    Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+    out.translation() = a.translation() + t * (b.translation() - a.translation());
+    out.linear() = Eigen::Quaterniond(a.linear()).slerp(std::clamp(t, 0.0, 1.0), Eigen::Quaterniond(b.linear())).toRotationMatrix();
+    return out;
+  };
+  std::vector<std::vector<Eigen::Isometry3d>> out;
+  for (size_t f = 0; f < scene.frames.size(); ++f) {
+    const Eigen::Isometry3d ego = ego_at(f) * offset;
+    std::vector<Eigen::Isometry3d> cams;
+    for (const auto& c : scene.cameras) cams.push_back(ego * c.sensor_to_ego);
+    out.push_back(std::move(cams));
+  }
+  return out;
+}
+
+}  // namespace chatsim::agents::view

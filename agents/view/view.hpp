@@ -1,0 +1,47 @@
+#pragma once
+// The view agent: camera offsets and ego motion from an instruction, and the new extrinsics
+// they give for every frame and camera.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include "common/scene/scene.hpp"
+
+namespace chatsim::agents::view {
+
+// What an instruction changes (the "LLM" part); offsets are relative to the current view.
+struct ViewChange {
+  std::optional<std::array<double, 3>> translation_m;   // ego frame: x ahead, y left, z up
+  std::optional<double> yaw_deg;                        // + turns left
+  std::optional<double> pitch_deg;                      // + looks up
+  std::optional<std::string> ego_motion;                // none, slow, fast
+  bool reset = false;
+};
+ViewChange parse_view(const std::string& instruction);
+nlohmann::json to_json(const ViewChange& v);
+ViewChange view_change_from_json(const nlohmann::json& j);
+
+// The view part of the edit state.
+struct ViewState {
+  std::array<double, 3> translation_m{0, 0, 0};
+  double yaw_deg = 0;
+  double pitch_deg = 0;
+  std::string ego_motion = "none";
+};
+ViewState apply(const ViewState& state, const ViewChange& change);
+nlohmann::json to_json(const ViewState& v);
+ViewState view_state_from_json(const nlohmann::json& j);
+
+// Speeds the ego drives at for "slowly" and "fast" (m/s).
+double ego_speed_mps(const std::string& ego_motion);
+
+// New camera-to-world poses, frames x cameras: the view offset applied in each frame's ego
+// frame (rotations about the camera's own position), and for ego motion the rig driving along
+// the recorded path from frame 0 at the chosen speed.
+std::vector<std::vector<Eigen::Isometry3d>> camera_poses(const scene::Scene& scene, const ViewState& view);
+
+}  // namespace chatsim::agents::view

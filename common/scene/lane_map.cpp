@@ -1,0 +1,139 @@
+#include "common/scene/lane_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace chatsim::scene {
+namespace {
+
+Eigen::Vector2d xy(const Eigen::Vector3d& v) { return v.head<2>(); }
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+}  // namespace
+
+LaneMap::LaneMap(std::vector<Lane> lanes) : lanes_(std::move(lanes)) {
+  for (auto& lane : lanes_) {
+    lane.s.assign(lane.centerline.size(), 0.0);
+    for (size_t i = 1; i < lane.centerline.size(); ++i)
+      lane.s[i] = lane.s[i - 1] + (xy(lane.centerline[i]) - xy(lane.centerline[i - 1])).norm();
+  }
+}
+
+int LaneMap::find(const std::string& id) const {
+  for (size_t i = 0; i < lanes_.size(); ++i)
+    if (lanes_[i].id == id) return int(i);
+  return -1;
+}
+
+LanePosition LaneMap::project(int index, const Eigen::Vector2d& p) const {
+  const Lane& lane = lanes_.at(size_t(index));
+  LanePosition best{index, 0, 0, 0};
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i + 1 < lane.centerline.size(); ++i) {
+    const Eigen::Vector2d a = xy(lane.centerline[i]);
+    const Eigen::Vector2d d = xy(lane.centerline[i + 1]) - a;
+    const double len2 = d.squaredNorm();
+    if (len2 <= 0) continue;
+    const double t = std::clamp((p - a).dot(d) / len2, 0.0, 1.0);
+    const Eigen::Vector2d q = a + t * d;
+    const double d2 = (p - q).squaredNorm();
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best.s = lane.s[i] + t * std::sqrt(len2);
+      best.lateral = cross2(d, p - a) / std::sqrt(len2);
+      best.tangent_yaw = std::atan2(d.y(), d.x());
+    }
+  }
+  return best;
+}
+
+std::optional<LanePosition> LaneMap::nearest(const Eigen::Vector2d& p, const std::string& type) const {
+  std::optional<LanePosition> best;
+  for (size_t i = 0; i < lanes_.size(); ++i) {
+    if (!type.empty() && lanes_[i].type != type) continue;
+    if (lanes_[i].centerline.size() < 2) continue;
+    const auto pos = project(int(i), p);
+    if (!best || std::abs(pos.lateral) < std::abs(best->lateral)) best = pos;
+  }
+  return best;
+}
+
+std::vector<LanePosition> LaneMap::containing(const Eigen::Vector2d& p, double margin) const {
+  std::vector<LanePosition> out;
+  for (size_t i = 0; i < lanes_.size(); ++i) {
+    if (lanes_[i].centerline.size() < 2) continue;
+    const auto pos = project(int(i), p);
+    const bool inside_extent = pos.s > 1e-6 && pos.s < lanes_[i].length() - 1e-6;
+    if (inside_extent && std::abs(pos.lateral) <= lanes_[i].width / 2 + margin) out.push_back(pos);
+  }
+  std::sort(out.begin(), out.end(),
+            [](const LanePosition& a, const LanePosition& b) { return std::abs(a.lateral) < std::abs(b.lateral); });
+  return out;
+}
+
+std::vector<int> LaneMap::in_region(const Eigen::Vector2d& p, double radius) const {
+  std::vector<int> out;
+  for (size_t i = 0; i < lanes_.size(); ++i)
+    if (lanes_[i].centerline.size() >= 2 && std::abs(project(int(i), p).lateral) <= radius &&
+        (point_at(int(i), project(int(i), p).s) - p).norm() <= radius)
+      out.push_back(int(i));
+  return out;
+}
+
+Eigen::Vector2d LaneMap::point_at(int index, double s) const {
+  const Lane& lane = lanes_.at(size_t(index));
+  if (lane.centerline.size() < 2) return lane.centerline.empty() ? Eigen::Vector2d::Zero() : xy(lane.centerline[0]);
+  s = std::clamp(s, 0.0, lane.length());
+  auto it = std::upper_bound(lane.s.begin(), lane.s.end(), s);
+  size_t i = std::min<size_t>(size_t(std::max<long>(it - lane.s.begin() - 1, 0)), lane.s.size() - 2);
+  const double seg = lane.s[i + 1] - lane.s[i];
+  const double t = seg > 0 ? (s - lane.s[i]) / seg : 0.0;
+  return xy(lane.centerline[i]) + t * (xy(lane.centerline[i + 1]) - xy(lane.centerline[i]));
+}
+
+double LaneMap::tangent_yaw_at(int index, double s) const {
+  const Lane& lane = lanes_.at(size_t(index));
+  if (lane.centerline.size() < 2) return 0;
+  s = std::clamp(s, 0.0, lane.length());
+  auto it = std::upper_bound(lane.s.begin(), lane.s.end(), s);
+  size_t i = std::min<size_t>(size_t(std::max<long>(it - lane.s.begin() - 1, 0)), lane.s.size() - 2);
+  const Eigen::Vector2d d = xy(lane.centerline[i + 1]) - xy(lane.centerline[i]);
+  return std::atan2(d.y(), d.x());
+}
+
+double LaneMap::travel_yaw_at(int index, double s) const {
+  const double yaw = tangent_yaw_at(index, s);
+  if (lanes_.at(size_t(index)).direction == TrafficDirection::Backward)
+    return std::remainder(yaw + std::numbers::pi, 2 * std::numbers::pi);
+  return yaw;
+}
+
+std::vector<LaneCrossing> LaneMap::crossings(int index) const {
+  std::vector<LaneCrossing> out;
+  const Lane& self = lanes_.at(size_t(index));
+  for (size_t o = 0; o < lanes_.size(); ++o) {
+    if (int(o) == index) continue;
+    const Lane& other = lanes_[o];
+    for (size_t i = 0; i + 1 < self.centerline.size(); ++i) {
+      const Eigen::Vector2d p = xy(self.centerline[i]);
+      const Eigen::Vector2d r = xy(self.centerline[i + 1]) - p;
+      for (size_t j = 0; j + 1 < other.centerline.size(); ++j) {
+        const Eigen::Vector2d q = xy(other.centerline[j]);
+        const Eigen::Vector2d d = xy(other.centerline[j + 1]) - q;
+        const double denom = cross2(r, d);
+        if (std::abs(denom) < 1e-9) continue;  // parallel lanes never cross
+        const double t = cross2(q - p, d) / denom;
+        const double u = cross2(q - p, r) / denom;
+        if (t < 0 || t >= 1 || u < 0 || u >= 1) continue;
+        out.push_back({int(o), self.s[i] + t * r.norm(), other.s[j] + u * d.norm()});
+      }
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const LaneCrossing& a, const LaneCrossing& b) { return a.s_self < b.s_self; });
+  return out;
+}
+
+}  // namespace chatsim::scene

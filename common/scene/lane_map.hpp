@@ -1,0 +1,67 @@
+#pragma once
+// The lane map (lanes.json): centreline polylines with width, type and traffic direction, and
+// the queries the agents need (nearest lane, lanes in a region, direction of travel, crossings).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace chatsim::scene {
+
+enum class TrafficDirection { Forward, Backward, Both };
+
+struct Lane {
+  std::string id;
+  std::string type = "driving";            // driving, parking, ...
+  double width = 3.5;
+  std::vector<Eigen::Vector3d> centerline;
+  TrafficDirection direction = TrafficDirection::Forward;
+  std::vector<double> s;                   // arc length at each centreline point (filled by LaneMap)
+
+  double length() const { return s.empty() ? 0.0 : s.back(); }
+};
+
+// Where a point is relative to one lane.
+struct LanePosition {
+  int lane = -1;
+  double s = 0;             // arc length of the closest centreline point
+  double lateral = 0;       // signed distance, left of the polyline direction positive
+  double tangent_yaw = 0;   // polyline direction at s
+};
+
+struct LaneCrossing {
+  int other = -1;
+  double s_self = 0;        // arc length on this lane
+  double s_other = 0;       // arc length on the other lane
+};
+
+class LaneMap {
+ public:
+  LaneMap() = default;
+  explicit LaneMap(std::vector<Lane> lanes);
+
+  const std::vector<Lane>& lanes() const { return lanes_; }
+  bool empty() const { return lanes_.empty(); }
+  int find(const std::string& id) const;   // -1 if absent
+
+  LanePosition project(int lane, const Eigen::Vector2d& p) const;
+  // The lane whose centreline is closest to p (optionally of one type, e.g. "driving").
+  std::optional<LanePosition> nearest(const Eigen::Vector2d& p, const std::string& type = "") const;
+  // Lanes p lies on: within half the width of the centreline, inside the lane's extent.
+  std::vector<LanePosition> containing(const Eigen::Vector2d& p, double margin = 0.0) const;
+  // Lanes with some centreline point within radius of p.
+  std::vector<int> in_region(const Eigen::Vector2d& p, double radius) const;
+
+  Eigen::Vector2d point_at(int lane, double s) const;   // clamped to the lane's extent
+  double tangent_yaw_at(int lane, double s) const;
+  // Yaw of legal travel at s: the polyline direction, reversed for backward lanes.
+  double travel_yaw_at(int lane, double s) const;
+  // Where other lanes' centrelines cross this lane's, in order along it.
+  std::vector<LaneCrossing> crossings(int lane) const;
+
+ private:
+  std::vector<Lane> lanes_;
+};
+
+}  // namespace chatsim::scene

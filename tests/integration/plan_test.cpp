@@ -1,0 +1,82 @@
+// chatsim plan through real processes: it starts the bus and the decision agents when no bus
+// runs, answers over the bus, prints the edit state, and leaves no process behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/subprocess.hpp"
+
+using namespace chatsim;
+using namespace std::chrono_literals;
+using test_support::bin;
+using test_support::ScopedProcess;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path layout_scene() {
+  return fs::path(CHATSIM_SOURCE_DIR) / ".." / "shared" / "data" / "commands" / "scene-layout-dev";
+}
+
+int count_processes(const std::string& name) {
+  const std::string cmd = "pgrep -x " + name + " -P " + std::to_string(getpid()) + " | wc -l";
+  FILE* p = popen(cmd.c_str(), "r");
+  int n = 0;
+  if (p != nullptr) {
+    if (fscanf(p, "%d", &n) != 1) n = 0;
+    pclose(p);
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST(Plan, TwoRoundsThroughTheBusPrintTheEditState) {
+  if (!fs::exists(layout_scene())) GTEST_SKIP() << "shared data absent: " << layout_scene();
+  const auto out = test_support::temp_path("plan-out.json");
+  ScopedProcess proc(test_support::spawn(
+      {"/bin/sh", "-c",
+       bin("chatsim") + " plan --scene " + layout_scene().string() +
+           " 'Remove all cars and add a red Porsche 20 m ahead driving toward me fast.' 'Make it blue.' > " +
+           out.string() + " 2>/dev/null"},
+      "/dev/null"));
+  const auto status = proc.wait(60s);
+  ASSERT_TRUE(status);
+  ASSERT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0);
+  const auto state = nlohmann::json::parse(test_support::read_file(out));
+  EXPECT_EQ(state["scene"], "layout-dev");
+  EXPECT_EQ(state["removed"].size(), 8u);
+  ASSERT_EQ(state["added"].size(), 1u);
+  EXPECT_EQ(state["added"][0]["asset"], "porsche_911");
+  EXPECT_LT(state["added"][0]["color_rgb"][0].get<int>(), 100);  // blue now
+  // Fast toward the ego, it drives off the mapped lanes before the clip ends and leaves the scene there.
+  const auto& trajectory = state["added"][0]["trajectory"];
+  EXPECT_GT(trajectory.size(), 20u);
+  EXPECT_LE(trajectory.size(), 100u);
+  EXPECT_FALSE(state["notes"].empty());
+  EXPECT_EQ(state["rounds"].size(), 2u);
+  EXPECT_EQ(count_processes("chatsim-motion"), 0);
+}
+
+TEST(Plan, BadSceneIsAUsageErrorNamingTheFile) {
+  const auto log = test_support::temp_path("plan-bad.log");
+  ScopedProcess proc(test_support::spawn({bin("chatsim"), "plan", "--scene", "/nonexistent/scene", "add a car"}, log));
+  const auto status = proc.wait(20s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 2);
+  EXPECT_NE(test_support::read_file(log).find("/nonexistent/scene"), std::string::npos);
+}
+
+TEST(Plan, SceneInfoSummarises) {
+  if (!fs::exists(layout_scene())) GTEST_SKIP() << "shared data absent: " << layout_scene();
+  const auto log = test_support::temp_path("scene-info.log");
+  ScopedProcess proc(test_support::spawn({bin("chatsim"), "scene", "info", layout_scene().string()}, log));
+  const auto status = proc.wait(20s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 0);
+  const auto text = test_support::read_file(log);
+  EXPECT_NE(text.find("frames: 100"), std::string::npos) << text;
+  EXPECT_NE(text.find("vehicle.car: 6"), std::string::npos) << text;
+}

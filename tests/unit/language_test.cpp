@@ -1,0 +1,154 @@
+// The offline interpreter's parts: words and numbers, colours, and each agent's parser.
+#include <gtest/gtest.h>
+
+#include "agents/asset/asset_choice.hpp"
+#include "agents/deletion/deletion.hpp"
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+#include "agents/llm/llm_backend.hpp"
+#include "agents/manager/decompose.hpp"
+#include "agents/motion/motion_intent.hpp"
+#include "agents/view/view.hpp"
+
+using namespace chatsim::agents;
+
+TEST(Language, NumbersInDigitsAndWords) {
+  auto q = text::quantities(text::words("move 2.5m ahead, then half a meter up and twenty five metres left"),
+                            {"meters", "meter", "m"});
+  ASSERT_EQ(q.size(), 3u);
+  EXPECT_DOUBLE_EQ(q[0].value, 2.5);
+  EXPECT_DOUBLE_EQ(q[1].value, 0.5);
+  EXPECT_DOUBLE_EQ(q[2].value, 25);
+  EXPECT_EQ(text::words("front-left, -3"), (std::vector<std::string>{"front", "left", "-3"}));
+}
+
+TEST(Language, ColourClassesFollowHueSaturationLightness) {
+  EXPECT_EQ(lexicon::color_class({200, 30, 35}), "red");
+  EXPECT_EQ(lexicon::color_class({240, 200, 20}), "yellow");
+  EXPECT_EQ(lexicon::color_class({175, 178, 182}), "gray");
+  EXPECT_EQ(lexicon::color_class({235, 235, 230}), "white");
+  EXPECT_EQ(lexicon::color_class({20, 20, 22}), "black");
+  EXPECT_EQ(lexicon::color_class({250, 110, 20}), "orange");
+  // Every named colour we produce lands in the class of its base word.
+  for (const char* c : {"red", "orange", "yellow", "green", "blue", "purple", "white", "black"}) {
+    const auto m = lexicon::find_colors(text::words(std::string("a ") + c + " car"));
+    ASSERT_EQ(m.size(), 1u) << c;
+    EXPECT_EQ(lexicon::color_class(m[0].rgb), c);
+  }
+  EXPECT_EQ(lexicon::color_class(lexicon::find_colors(text::words("silver"))[0].rgb), "gray");
+  EXPECT_EQ(lexicon::color_class(lexicon::find_colors(text::words("dark blue"))[0].rgb), "blue");
+}
+
+TEST(Language, ViewChanges) {
+  auto v = view::parse_view("Shift the view 2 m to the right and 1 m up.");
+  ASSERT_TRUE(v.translation_m);
+  EXPECT_EQ(*v.translation_m, (std::array<double, 3>{0, -2, 1}));
+  v = view::parse_view("Move back 3 meters");
+  EXPECT_EQ(*v.translation_m, (std::array<double, 3>{-3, 0, 0}));
+  v = view::parse_view("Look 15 degrees to the right");
+  EXPECT_DOUBLE_EQ(*v.yaw_deg, -15);
+  v = view::parse_view("Ego vehicle drives ahead slowly");
+  EXPECT_EQ(v.ego_motion, "slow");
+  EXPECT_FALSE(v.translation_m);
+  const auto state = view::apply(view::apply({}, view::parse_view("move 5 m ahead")), view::parse_view("3 m up"));
+  EXPECT_EQ(state.translation_m, (std::array<double, 3>{5, 0, 3}));
+}
+
+TEST(Language, MotionIntents) {
+  auto m = motion::parse_motion("add a red porsche 20 meters ahead driving toward me fast");
+  EXPECT_EQ(m.placement, "front");
+  EXPECT_DOUBLE_EQ(*m.distance_m, 20);
+  EXPECT_EQ(m.direction, "toward");
+  EXPECT_EQ(m.speed, "fast");
+  m = motion::parse_motion("add a green van driving at 50 km/h in the left lane");
+  EXPECT_NEAR(*m.speed_mps, 50 / 3.6, 1e-9);
+  EXPECT_EQ(m.lane, "left");
+  EXPECT_FALSE(m.placement);  // a lane is not a side
+  m = motion::parse_motion("add a police car also driving the wrong way and chasing behind the porsche");
+  ASSERT_TRUE(m.relative);
+  EXPECT_EQ(m.relative->to, "the porsche");
+  EXPECT_EQ(m.relative->region, "back");
+  EXPECT_TRUE(m.wrong_way.value_or(false));
+  EXPECT_TRUE(m.chase.value_or(false));
+  EXPECT_EQ(motion::parse_motion("an ambulance changing lanes to the left").action, "lane_change_left");
+  EXPECT_EQ(motion::parse_motion("a silver tesla reversing slowly").action, "backward");
+  EXPECT_EQ(motion::parse_motion("place a parked taxi on the right side 10 m ahead").placement, "right_front");
+  // A revision steps the speed from where it was.
+  motion::MotionIntent base;
+  base.speed = "slow";
+  base.merge(motion::parse_motion("make it faster"));
+  EXPECT_EQ(base.speed, "normal");
+}
+
+TEST(Language, AssetsByTypeBrandAndColour) {
+  auto r = asset::parse_asset("add a dark blue Porsche");
+  EXPECT_EQ(r.brand, "porsche");
+  EXPECT_EQ(r.type, "car");
+  auto c = asset::choose_asset(r);
+  EXPECT_EQ(c.asset, "porsche_911");
+  EXPECT_EQ(lexicon::color_class(c.color_rgb), "blue");
+  r = asset::parse_asset("add two traffic cones");
+  EXPECT_EQ(r.type, "cone");
+  EXPECT_EQ(r.count, 2);
+  c = asset::choose_asset(asset::parse_asset("add a Zorbex car in front"));
+  EXPECT_EQ(c.asset, "sedan");
+  ASSERT_TRUE(c.note);
+  EXPECT_NE(c.note->find("Zorbex"), std::string::npos);
+  // Revising keeps what is not said.
+  const auto base = asset::choose_asset(asset::parse_asset("a red taxi"));
+  const auto truck = asset::choose_asset(asset::parse_asset("change it into a truck"), base);
+  EXPECT_EQ(truck.type, "truck");
+  EXPECT_EQ(lexicon::color_class(truck.color_rgb), "red");
+}
+
+TEST(Language, DeletionSelectors) {
+  auto d = deletion::parse_deletion("Delete all vehicles except the truck");
+  ASSERT_EQ(d.targets.size(), 1u);
+  EXPECT_EQ(d.targets[0].quantity, "all");
+  ASSERT_EQ(d.except.size(), 1u);
+  EXPECT_EQ(d.except[0].category, "vehicle.truck");
+  d = deletion::parse_deletion("Remove the yellow car and the green one");
+  ASSERT_EQ(d.targets.size(), 2u);
+  EXPECT_EQ(d.targets[1].color, "green");
+  EXPECT_EQ(d.targets[1].category, "vehicle");
+  d = deletion::parse_deletion("delete the second car on the left");
+  EXPECT_EQ(d.targets[0].nth, 2);
+  EXPECT_EQ(d.targets[0].region, "left");
+  EXPECT_EQ(deletion::parse_deletion("Delete the purple helicopter").unsupported, "helicopter");
+}
+
+TEST(Language, CommandsSplitIntoInstructions) {
+  auto in = manager::decompose(
+      "Delete the bus, add an orange truck parked on the right 15 m ahead, and turn the view 10 degrees left.");
+  ASSERT_EQ(in.size(), 3u);
+  EXPECT_EQ(in[0].kind, "delete");
+  EXPECT_EQ(in[1].kind, "add");
+  EXPECT_EQ(in[2].kind, "view");
+  in = manager::decompose("Add a Porsche ahead and a Mini on my left.");
+  ASSERT_EQ(in.size(), 2u);
+  EXPECT_EQ(in[1].text, "add a mini on my left");
+  in = manager::decompose("Change it into a truck and make it faster.");
+  ASSERT_EQ(in.size(), 2u);
+  EXPECT_EQ(in[0].kind, "revise");
+  EXPECT_EQ(in[1].kind, "revise");
+  EXPECT_EQ(manager::decompose("Remove the Porsche I added.")[0].kind, "remove_added");
+  EXPECT_EQ(manager::decompose("asdkj qwe zzz")[0].kind, "unclear");
+  EXPECT_EQ(manager::decompose("Create a traffic jam.")[0].kind, "traffic_jam");
+  EXPECT_EQ(manager::reference_in("make the added car turn left"), "the added car");
+  EXPECT_EQ(manager::reference_in("make both of them black"), "both");
+}
+
+TEST(Language, OfflineAnswersMatchTheirSchemas) {
+  auto backend = llm::make_backend("offline");
+  for (const std::string agent : {"manager", "view", "deletion", "asset", "motion"}) {
+    const auto out = backend->complete(llm::prompt_for(agent), "Remove all cars and add a red Porsche 20 m ahead.");
+    EXPECT_EQ(llm::validate(out, llm::prompt_for(agent).schema), "") << agent;
+  }
+  EXPECT_THROW(llm::make_backend("no-such-backend"), llm::BackendError);
+  const nlohmann::json schema = {{"type", "object"}, {"required", {"a"}}, {"additionalProperties", false},
+                                 {"properties", {{"a", {{"enum", {"x", "y"}}}}}}};
+  EXPECT_EQ(llm::validate({{"a", "x"}}, schema), "");
+  EXPECT_NE(llm::validate({{"a", "z"}}, schema).find("$.a"), std::string::npos);
+  EXPECT_NE(llm::validate({{"b", 1}, {"a", "x"}}, schema).find("unexpected field 'b'"), std::string::npos);
+  EXPECT_NE(llm::validate(nlohmann::json::object(), schema).find("missing required field 'a'"), std::string::npos);
+}

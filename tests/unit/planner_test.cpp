@@ -1,0 +1,127 @@
+// The motion planner on a synthetic lane map: placements, actions, collisions, no lane map.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "agents/motion/planner.hpp"
+#include "tests/support/synthetic_scene.hpp"
+
+using namespace chatsim::agents::motion;
+
+namespace {
+
+PlanResult plan(const chatsim::scene::Scene& s, const std::string& instruction, const std::string& type = "car") {
+  PlanRequest req;
+  req.intent = parse_motion(instruction);
+  req.type = type;
+  req.obstacles = scene_obstacles(s, {});
+  return plan_motion(s, req);
+}
+
+double heading_change_deg(const std::vector<Pose2>& t) {
+  double total = 0;
+  for (size_t i = 1; i < t.size(); ++i) total += std::remainder(t[i].yaw - t[i - 1].yaw, 2 * M_PI);
+  return total * 180 / M_PI;
+}
+
+bool collides(const PlanResult& r, const std::vector<Obstacle>& obstacles, const Eigen::Vector3d& size) {
+  for (size_t f = 0; f < r.trajectory.size(); ++f)
+    for (const auto& o : obstacles)
+      if (f < o.poses.size() && o.poses[f] && boxes_overlap(r.trajectory[f], size, *o.poses[f], o.size_lwh))
+        return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(Planner, FrontMeansAheadInTheEgoLaneMovingAway) {
+  const auto s = test_support::synthetic_scene();
+  const auto r = plan(s, "a car 15 m in front of me");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "ego");
+  EXPECT_NEAR(r.trajectory[0].x, 15, 1.5);
+  EXPECT_GT(r.trajectory.back().x, r.trajectory[0].x + 30);  // ~8 m/s for 5 s
+  EXPECT_EQ(r.resolved.direction, "away");
+  EXPECT_FALSE(collides(r, scene_obstacles(s, {}), {4.5, 1.9, 1.5}));
+}
+
+TEST(Planner, TowardMeUsesTheOncomingLaneUnlessWrongWay) {
+  const auto s = test_support::synthetic_scene();
+  auto r = plan(s, "a car 25 m ahead driving toward me");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "oncoming");
+  EXPECT_FALSE(r.resolved.wrong_way.value_or(true));
+  r = plan(s, "a car driving the wrong way toward me in my lane");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "ego");
+  EXPECT_TRUE(r.resolved.wrong_way.value_or(false));
+  EXPECT_LT(r.trajectory.back().x, r.trajectory.front().x);
+}
+
+TEST(Planner, TurnsAtTheCrossingWithFeasibleCurvature) {
+  const auto s = test_support::synthetic_scene();
+  auto r = plan(s, "a car 40 m ahead that turns left");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_GT(heading_change_deg(r.trajectory), 60);
+  // Lateral acceleration stays within what a car does (speed limited in the curve).
+  for (size_t i = 1; i + 1 < r.trajectory.size(); ++i) {
+    const double v = std::hypot(r.trajectory[i + 1].x - r.trajectory[i].x, r.trajectory[i + 1].y - r.trajectory[i].y) / 0.1;
+    const double w = std::remainder(r.trajectory[i + 1].yaw - r.trajectory[i].yaw, 2 * M_PI) / 0.1;
+    EXPECT_LT(std::abs(v * w), 4.5) << "frame " << i;
+  }
+  r = plan(s, "a car 40 m ahead that turns right");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_LT(heading_change_deg(r.trajectory), -60);
+}
+
+TEST(Planner, LaneChangeMovesOneLane) {
+  const auto s = test_support::synthetic_scene();
+  const auto r = plan(s, "a car 10 m ahead changing lanes to the left");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_NEAR(r.trajectory.back().y - r.trajectory.front().y, 3.5, 0.3);
+  EXPECT_NEAR(r.trajectory.back().yaw, 0, 0.1);
+}
+
+TEST(Planner, AvoidsParkedAndMovingVehicles) {
+  const auto s = test_support::synthetic_scene();
+  // The parked red car stands at x=20 on the parking lane: a parked car 20 m ahead on the right moves aside.
+  const auto r = plan(s, "a parked car on the right 20 m ahead");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "parking");
+  EXPECT_FALSE(collides(r, scene_obstacles(s, {}), {4.5, 1.9, 1.5}))
+      << "start x " << r.trajectory[0].x << " y " << r.trajectory[0].y << (r.notes.empty() ? "" : r.notes[0]);
+  EXPECT_EQ(r.resolved.action, "static");
+}
+
+TEST(Planner, NoTurnWithoutACrossingIsAClearRefusal) {
+  auto s = test_support::synthetic_scene();
+  std::vector<chatsim::scene::Lane> straight(s.lanes.lanes().begin(), s.lanes.lanes().begin() + 4);
+  s.lanes = chatsim::scene::LaneMap(straight);
+  const auto r = plan(s, "a car ahead that turns left");
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.reason.find("turn left"), std::string::npos) << r.reason;
+}
+
+TEST(Planner, WithoutALaneMapPlansStraightAndSaysSo) {
+  const auto s = test_support::synthetic_scene(false);
+  const auto r = plan(s, "a car 20 m ahead that turns left");
+  ASSERT_TRUE(r.ok);
+  EXPECT_NEAR(r.trajectory[0].x, 20, 1e-6);
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes[0].find("no lane map"), std::string::npos);
+}
+
+TEST(Planner, ConesNeverMove) {
+  const auto s = test_support::synthetic_scene();
+  const auto r = plan(s, "a cone 12 m ahead driving fast", "cone");
+  ASSERT_TRUE(r.ok);
+  EXPECT_DOUBLE_EQ(r.trajectory.front().x, r.trajectory.back().x);
+}
+
+TEST(Planner, BoxOverlap) {
+  const Eigen::Vector3d car(4, 2, 1.5);
+  EXPECT_TRUE(boxes_overlap({0, 0, 0}, car, {3.9, 0, 0}, car));
+  EXPECT_FALSE(boxes_overlap({0, 0, 0}, car, {4.1, 0, 0}, car));
+  EXPECT_FALSE(boxes_overlap({0, 0, 0}, car, {3.9, 0, 0}, car, 0.9));
+  EXPECT_TRUE(boxes_overlap({0, 0, 0}, car, {0, 0, M_PI / 2}, car));
+}
