@@ -73,7 +73,13 @@ std::optional<std::string> unknown_brand_in(const std::string& instruction, cons
 }  // namespace
 
 AssetRequest parse_asset(const std::string& instruction) {
-  const auto w = text::words(instruction);
+  auto w = text::words(instruction);
+  // What follows a relation names another vehicle ("a police car chasing the porsche").
+  const size_t rel = text::find_any(w, {"chasing", "chases", "following", "follows", "pursuing", "tailing",
+                                        "behind the", "behind it", "in front of the", "in front of it", "ahead of the",
+                                        "to the front of", "next to the", "beside the", "after the", "left of the",
+                                        "right of the", "like the", "same as the"});
+  if (rel != std::string::npos && rel > 0) w.resize(rel);
   AssetRequest r;
   const auto types = lexicon::find_types(w);
   for (const auto& t : types)

@@ -10,6 +10,7 @@
 #include "agents/asset/asset_choice.hpp"
 #include "agents/deletion/deletion.hpp"
 #include "agents/manager/decompose.hpp"
+#include "agents/llm/openai_backend.hpp"
 #include "agents/motion/motion_intent.hpp"
 #include "agents/view/view.hpp"
 
@@ -73,7 +74,8 @@ std::unique_ptr<Backend> make_backend(const std::string& requested) {
     name = env != nullptr && *env != '\0' ? env : "offline";
   }
   if (name == "offline") return std::make_unique<OfflineBackend>();
-  throw BackendError("LLM backend '" + name + "' is not available (use 'offline'; the 'openai' backend is not built yet)");
+  if (name == "openai") return make_openai_backend(openai_settings_from_env());
+  throw BackendError("LLM backend '" + name + "' is not known (use 'offline' or 'openai')");
 }
 
 }  // namespace chatsim::agents::llm

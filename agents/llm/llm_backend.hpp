@@ -1,7 +1,7 @@
 #pragma once
 // The "LLM" part of every agent: an instruction in, a JSON configuration out, validated
 // against the agent's output schema. Backends: `offline` (a deterministic English interpreter,
-// the default) and, later, `openai` (any OpenAI-compatible endpoint).
+// the default) and `openai` (any OpenAI-compatible endpoint, see openai_backend.hpp).
 #include <memory>
 #include <string>
 

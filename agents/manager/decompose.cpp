@@ -134,6 +134,31 @@ std::vector<Words> split_additions(const Words& c) {
   return out;
 }
 
+// "add a police car chasing a porsche that drives the wrong way": the chased vehicle is new
+// too. It is added first, then the chaser behind it ("... chasing the porsche").
+std::vector<Words> split_chase(const Words& c) {
+  static const char* verbs[] = {"chasing", "chases", "following", "follows", "pursuing", "pursues", "tailing", "behind"};
+  for (size_t i = 1; i + 2 < c.size(); ++i) {
+    bool verb = false;
+    for (const char* v : verbs) verb = verb || c[i] == v;
+    if (!verb || (c[i + 1] != "a" && c[i + 1] != "an")) continue;
+    const Words chased(c.begin() + long(i) + 1, c.end());
+    const Words chaser(c.begin(), c.begin() + long(i));
+    if (!mentions_vehicle(chased) || !mentions_vehicle(chaser)) continue;
+    std::string ref;
+    const auto brands = lexicon::find_brands(chased);
+    const auto types = lexicon::find_types(chased);
+    if (!brands.empty()) ref = text::join(chased, brands.front().begin, brands.front().end);
+    else ref = text::join(chased, types.front().begin, types.front().end);
+    Words first{"add"};
+    first.insert(first.end(), chased.begin(), chased.end());
+    Words second = chaser;
+    for (const auto& w : text::words(std::string(c[i]) + " the " + ref)) second.push_back(w);
+    return {first, second};
+  }
+  return {c};
+}
+
 Instruction classify(const Words& c) {
   Instruction in;
   in.text = text::join(c);
@@ -276,7 +301,9 @@ std::vector<Instruction> decompose(const std::string& command) {
     for (const auto& c : clauses(w, comma)) {
       Instruction in = classify(c);
       if (in.kind == "add" && std::find(add_verbs().begin(), add_verbs().end(), c.front()) != add_verbs().end()) {
-        const auto parts = split_additions(text::words(in.text));
+        std::vector<Words> parts;
+        for (const auto& part : split_additions(text::words(in.text)))
+          for (const auto& p : split_chase(part)) parts.push_back(p);
         if (parts.size() > 1) {
           for (const auto& p : parts) {
             Instruction part = in;

@@ -262,7 +262,12 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
       round.done.push_back("Revised " + v.id + ".");
       continue;
     }
-    json args{{"base_intent", v.intent}, {"intent", said}, {"size_lwh", v.asset["size_lwh"]},
+    json keep = said;
+    // Same place unless told otherwise: a revision of how it moves keeps where it starts.
+    if (!said.contains("placement") && !said.contains("relative") && !said.contains("distance_m") &&
+        !v.intent.contains("relative") && v.resolved.contains("distance_m"))
+      keep["distance_m"] = v.resolved["distance_m"];
+    json args{{"base_intent", v.intent}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},
               {"type", v.asset["type"]}, {"removed", c.removed}, {"others", others_json(c, t)}};
     json merged_rel = said.contains("relative") ? said["relative"] : (said.contains("placement") ? json() : v.intent.value("relative", json()));
     if (!merged_rel.is_null()) {

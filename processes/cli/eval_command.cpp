@@ -9,6 +9,7 @@
 
 #include "agents/core/agent_registry.hpp"
 #include "agents/manager/manager.hpp"
+#include "bench/chart.hpp"
 #include "bench/command_grader.hpp"
 #include "common/scene/scene.hpp"
 #include "common/util/exit_codes.hpp"
@@ -24,6 +25,7 @@ struct EvalArgs {
   std::string scene;
   std::string backend;
   std::string out;
+  std::string chart;
   bool verbose = false;
 };
 
@@ -62,6 +64,7 @@ int run_eval(const EvalArgs& a) {
     std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend(a.backend);
     agents::manager::Manager manager(agents::local_caller(backend), backend);
     std::map<std::string, std::pair<int, int>> by_category;
+    std::map<std::string, std::pair<double, int>> latency_by_category;  // total ms, rounds
     json failures = json::array();
     double total_ms = 0;
     int rounds = 0, passed = 0;
@@ -78,8 +81,11 @@ int run_eval(const EvalArgs& a) {
           error = true;
           error_text = e.what();
         }
-        total_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        total_ms += ms;
         ++rounds;
+        latency_by_category[c.category].first += ms;
+        latency_by_category[c.category].second++;
         if (error) break;
       }
       manager.reset(c.id);
@@ -111,7 +117,8 @@ int run_eval(const EvalArgs& a) {
     }
     json cats = json::object();
     for (const auto& [name, pt] : by_category)
-      cats[name] = {{"passed", pt.first}, {"total", pt.second}, {"accuracy", double(pt.first) / pt.second}};
+      cats[name] = {{"passed", pt.first}, {"total", pt.second}, {"accuracy", double(pt.first) / pt.second},
+                    {"mean_decision_latency_ms", latency_by_category[name].first / latency_by_category[name].second}};
     auto share = [](int k, int n) { return n ? double(k) / n : 1.0; };
     const json report{
         {"cases_file", a.cases},
@@ -128,6 +135,16 @@ int run_eval(const EvalArgs& a) {
                     {"speed_match", share(motion.speed_match, motion.vehicles)}}},
         {"failures", failures}};
     std::cout << report.dump(1) << std::endl;
+    if (!a.chart.empty()) {
+      std::vector<bench::ChartPoint> points;
+      for (const auto& [name, c] : cats.items())
+        points.push_back({name, c["mean_decision_latency_ms"].get<double>(), c["accuracy"].get<double>()});
+      points.push_back({"all (" + backend->name() + ")", report["mean_decision_latency_ms"].get<double>(),
+                        report["accuracy"].get<double>()});
+      bench::write_scatter_png(a.chart, {"Decisions per category: " + std::filesystem::path(a.cases).filename().string(),
+                                         "mean decision latency per round [ms]", "accuracy", true},
+                               points);
+    }
     if (!a.out.empty()) {
       std::filesystem::create_directories(std::filesystem::absolute(a.out).parent_path());
       std::ofstream(a.out) << report.dump(1) << "\n";
@@ -155,6 +172,7 @@ void add_eval_command(CLI::App& app, int& result) {
   cmd->add_option("--scene", args->scene, "scene directory the cases speak about")->required();
   cmd->add_option("--backend", args->backend, "LLM backend (default: $CHATSIM_LLM or offline)");
   cmd->add_option("--out", args->out, "also write the report here (e.g. bench/results/commands-dev.json)");
+  cmd->add_option("--chart", args->chart, "also draw accuracy against latency per category as a PNG");
   cmd->add_flag("--verbose,-v", args->verbose, "print each case's result to stderr");
   cmd->callback([args, &result] { result = run_eval(*args); });
 }

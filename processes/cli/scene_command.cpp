@@ -1,8 +1,10 @@
 // chatsim scene info: validate a scene directory and summarise it.
+#include <filesystem>
 #include <iostream>
 
 #include <spdlog/spdlog.h>
 
+#include "common/scene/demo_layout.hpp"
 #include "common/scene/scene.hpp"
 #include "common/scene/scene_summary.hpp"
 #include "common/util/exit_codes.hpp"
@@ -29,10 +31,39 @@ int run_info(const SceneInfoArgs& a) {
   }
 }
 
+struct DemoArgs {
+  std::string out;
+  uint64_t seed = 1;
+  int frames = 40;
+  bool layout_only = false;
+};
+
+int run_demo(const DemoArgs& a) {
+  if (!a.layout_only) {
+    std::cerr << "error: rendering the demo scene's images (Embree path tracing, sky, ground truth) is not built yet "
+                 "(issue #4); run with --layout-only for the street layout, enough for every decision\n";
+    return exit_code::kUsage;
+  }
+  scene::DemoOptions o;
+  o.seed = a.seed;
+  o.frames = a.frames;
+  const auto s = scene::demo_layout(o);
+  // Written beside the target and renamed when complete, so an interrupted run leaves nothing half-written.
+  const std::filesystem::path out = std::filesystem::absolute(a.out).lexically_normal();
+  const std::filesystem::path tmp = out.string() + ".tmp";
+  std::filesystem::remove_all(tmp);
+  scene::save_scene(s, tmp);
+  std::filesystem::remove_all(out);
+  std::filesystem::rename(tmp, out);
+  std::cout << "wrote " << out.string() << ": " << s.frames.size() << " frames, " << s.objects.size() << " objects, "
+            << s.lanes.lanes().size() << " lanes (seed " << a.seed << ")\n";
+  return exit_code::kOk;
+}
+
 }  // namespace
 
 void add_scene_command(CLI::App& app, int& result) {
-  auto* scene = app.add_subcommand("scene", "Scenes: inspect (info); import and demo come with issue #4's remaining parts");
+  auto* scene = app.add_subcommand("scene", "Scenes: inspect (info), generate the demo street (demo)");
   scene->require_subcommand(1);
   auto args = std::make_shared<SceneInfoArgs>();
   auto* info = scene->add_subcommand("info", "Validate a scene directory and print a summary (cameras, frames, extent, "
@@ -40,6 +71,14 @@ void add_scene_command(CLI::App& app, int& result) {
   info->add_option("dir", args->dir, "scene directory")->required();
   info->add_flag("--json", args->json, "print the summary as JSON");
   info->callback([args, &result] { result = run_info(*args); });
+  auto demo_args = std::make_shared<DemoArgs>();
+  auto* demo = scene->add_subcommand("demo", "Generate the procedural demo street (seeded). Today only its layout "
+                                             "(--layout-only): lanes, objects, rig, ego path; images come with issue #4");
+  demo->add_option("--out", demo_args->out, "output scene directory (replaced)")->required();
+  demo->add_option("--seed", demo_args->seed, "random seed (same seed, same scene)");
+  demo->add_option("--frames", demo_args->frames, "number of frames at 10 Hz")->check(CLI::Range(2, 10000));
+  demo->add_flag("--layout-only", demo_args->layout_only, "write the layout only (no images)");
+  demo->callback([demo_args, &result] { result = run_demo(*demo_args); });
 }
 
 }  // namespace chatsim::cli

@@ -1,0 +1,26 @@
+#pragma once
+// A small PNG chart (OpenCV) of speed against accuracy: one labelled point per method or
+// category, so a person can see the trade-off at a glance.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace chatsim::bench {
+
+struct ChartPoint {
+  std::string label;
+  double x = 0;   // speed axis (e.g. ms per decision; lower is better)
+  double y = 0;   // accuracy axis (0..1; higher is better)
+};
+
+struct ChartSpec {
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  bool log_x = false;
+};
+
+// Writes a PNG; throws std::runtime_error when it cannot.
+void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& points);
+
+}  // namespace chatsim::bench
