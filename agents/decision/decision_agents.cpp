@@ -139,7 +139,8 @@ class MotionAgent : public DecisionAgent {
                       {"yaw", std::round(plan.trajectory[i].yaw * 10000) / 10000}});
     return AgentOutcome::success({{"said", said}, {"intent", motion::to_json(intent)},
                                   {"resolved", motion::to_json(plan.resolved)}, {"trajectory", traj},
-                                  {"lane", plan.lane}, {"speed_mps", plan.speed_mps}, {"notes", plan.notes}});
+                                  {"lane", plan.lane}, {"speed_mps", plan.speed_mps}, {"notes", plan.notes},
+                                  {"not_done", plan.not_done}});
   }
 };
 

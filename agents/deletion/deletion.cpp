@@ -228,6 +228,11 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
       continue;
     }
     if (t.order == "farthest") std::reverse(m.begin(), m.end());
+    // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.
+    if (!t.order && t.quantity == "one" && (t.region == "front" || t.region == "back"))
+      std::stable_sort(m.begin(), m.end(), [](const Candidate* a, const Candidate* b) {
+        return std::abs(a->pe.y()) + 0.1 * a->pe.norm() < std::abs(b->pe.y()) + 0.1 * b->pe.norm();
+      });
     if (t.quantity == "all") {
       for (const auto* c : m) chosen.push_back(c->object->id);
     } else if (t.quantity == "n") {

@@ -298,8 +298,16 @@ std::vector<Instruction> decompose(const std::string& command) {
       w.push_back(ws[k]);
       comma.push_back(k == 0 && pending_comma);
     }
+    std::string previous;
     for (const auto& c : clauses(w, comma)) {
       Instruction in = classify(c);
+      // "raise the camera 2 m and move it 1 m left": "it" is the camera of the clause before.
+      if (in.kind == "revise" && previous == "view" && !mentions_vehicle(c) &&
+          !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty()) {
+        in.kind = "view";
+        in.target.clear();
+      }
+      previous = in.kind;
       if (in.kind == "add" && std::find(add_verbs().begin(), add_verbs().end(), c.front()) != add_verbs().end()) {
         std::vector<Words> parts;
         for (const auto& part : split_additions(text::words(in.text)))

@@ -199,6 +199,8 @@ bool Manager::add_one(Conversation& c, const json& asset_args, const json& motio
   v.speed_mps = plan.result["speed_mps"];
   v.lane = plan.result["lane"];
   for (const auto& n : plan.result["notes"]) c.notes.push_back(v.id + ": " + n.get<std::string>());
+  for (const auto& n : plan.result.value("not_done", json::array()))
+    c.unresolved.push_back({{"instruction", text}, {"reason", v.id + " was added, but " + n.get<std::string>()}});
   if (choice.contains("note")) c.notes.push_back(v.id + ": " + choice["note"].get<std::string>());
   c.added.push_back(v);
   c.last_ref = int(c.added.size()) - 1;
@@ -292,6 +294,8 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
     v.speed_mps = plan.result["speed_mps"];
     v.lane = plan.result["lane"];
     for (const auto& n : plan.result["notes"]) c.notes.push_back(v.id + ": " + n.get<std::string>());
+    for (const auto& n : plan.result.value("not_done", json::array()))
+      c.unresolved.push_back({{"instruction", in.text}, {"reason", v.id + ": " + n.get<std::string>()}});
     round.done.push_back("Revised " + v.id + ".");
   }
   if (!changed_any)
@@ -364,24 +368,26 @@ std::vector<int> Manager::resolve(const Conversation& c, const std::string& refe
   }
   const auto brands = lexicon::find_brands(w);
   const auto types = lexicon::find_types(w);
+  const auto colors = lexicon::find_colors(w);
   static const char* ordinals[] = {"first", "second", "third", "fourth", "fifth"};
   for (int k = 0; k < 5; ++k)
     if (text::has_phrase(w, ordinals[k]) && k < n) return {k};
   if (text::has_phrase(w, "last")) return {n - 1};
+  const bool typed = !types.empty() && types.front().type.type != "car" && types.front().type.type != "object";
+  if (brands.empty() && !typed && colors.empty()) {
+    // "it", "the added car", "the new one": the one spoken about last.
+    return {c.last_ref >= 0 && c.last_ref < n ? c.last_ref : n - 1};
+  }
+  // The most recent added vehicle that has every named brand, type and colour.
   for (int i = n - 1; i >= 0; --i) {
     const auto& a = c.added[size_t(i)].asset;
     const auto bw = a.value("brand_words", std::vector<std::string>{});
-    if (!brands.empty()) {
-      if (std::find(bw.begin(), bw.end(), brands.front().brand) != bw.end()) return {i};
+    if (!brands.empty() && std::find(bw.begin(), bw.end(), brands.front().brand) == bw.end()) continue;
+    if (typed && a.value("type", "") != types.front().type.type) continue;
+    if (!colors.empty() &&
+        lexicon::color_class(a.value("color_rgb", std::array<int, 3>{0, 0, 0})) != lexicon::color_class(colors.front().rgb))
       continue;
-    }
-    if (!types.empty() && types.front().type.type != "car" && types.front().type.type != "object") {
-      if (a.value("type", "") == types.front().type.type) return {i};
-      continue;
-    }
-    // "it", "the added car", "the new one": the one spoken about last.
-    if (c.last_ref >= 0 && c.last_ref < n) return {c.last_ref};
-    return {n - 1};
+    return {i};
   }
   return out;
 }

@@ -175,7 +175,11 @@ MotionIntent parse_motion(const std::string& instruction) {
                         "change lanes to the left", "changing lanes to the left", "changes lanes to the right",
                         "change lanes to the right", "changing lanes to the right", "turn to the left",
                         "turn to the right", "turns to the left", "turns to the right", "turning to the left",
-                        "turning to the right"})
+                        "turning to the right", "turn left", "turns left", "turning left", "turn right", "turns right",
+                        "turning right", "left turn", "right turn", "take a left", "take a right", "makes a left",
+                        "makes a right", "make a left", "make a right", "merge left", "merges left", "merging left",
+                        "merge right", "merges right", "merging right", "change lanes left", "change lanes right",
+                        "changes lanes left", "changes lanes right", "changing lanes left", "changing lanes right"})
     for (size_t at = find_phrase(without_lane, p); at != std::string::npos; at = find_phrase(without_lane, p))
       for (size_t k = 0; k < text::words(p).size(); ++k) without_lane[at + k] = "_";
   if (!m.relative) m.placement = find_placement(without_lane, ahead_distance);

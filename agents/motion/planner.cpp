@@ -532,7 +532,7 @@ class Planner {
     result.speed_mps = v;
     result.resolved = m_;
     if (m_.action && *m_.action != "straight" && *m_.action != "static" && *m_.action != "backward")
-      result.notes.push_back("the scene has no lane map, so '" + *m_.action + "' was planned as driving straight");
+      result.not_done.push_back("the scene has no lane map, so '" + *m_.action + "' was planned as driving straight");
     result.resolved.action = v == 0 ? "static" : (m_.action == "backward" ? "backward" : "straight");
     return result;
   }

@@ -47,6 +47,7 @@ struct PlanResult {
   std::string lane;                   // start lane id ("" without a lane map)
   double speed_mps = 0;
   std::vector<std::string> notes;     // what the user should know (e.g. an unavoidable collision)
+  std::vector<std::string> not_done;  // parts of the request it could not do, with why
 };
 
 // The obstacles a scene's labelled objects make, minus the removed ones.

@@ -69,3 +69,41 @@ TEST(Commands, ConversationKeepsItsStateAcrossRoundsAndRefusals) {
   s = manager.chat("c", dir, "Move the view 1 m up.").edit_state;
   EXPECT_TRUE(s["added"].empty());
 }
+
+// The same scene moved and turned in the world must give the same decisions: everything is
+// read in the ego frame at frame 0.
+TEST(Commands, DevCasesPassInARotatedAndShiftedWorld) {
+  const auto dir = test_support::shared_commands_dir();
+  if (!fs::exists(dir / "cases-dev.jsonl")) GTEST_SKIP() << "shared data absent: " << dir;
+  auto s = scene::load_scene(dir / "scene-layout-dev");
+  Eigen::Isometry3d move = Eigen::Isometry3d::Identity();
+  move.linear() = Eigen::AngleAxisd(0.65, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  move.translation() = Eigen::Vector3d(120, -45, 0);
+  for (auto& f : s.frames) f.ego_to_world = move * f.ego_to_world;
+  for (auto& o : s.objects)
+    for (auto& p : o.track) {
+      p.center = move * p.center;
+      p.yaw += 0.65;
+    }
+  std::vector<scene::Lane> lanes = s.lanes.lanes();
+  for (auto& l : lanes)
+    for (auto& p : l.centerline) p = move * p;
+  s.lanes = scene::LaneMap(lanes);
+  const auto moved = fs::temp_directory_path() / ("chatsim-rotated-" + std::to_string(::getpid()));
+  scene::save_scene(s, moved);
+  run_cases(dir / "cases-dev.jsonl", moved);
+}
+
+// Without a lane map, decisions still come, and what could not be done is said.
+TEST(Commands, NoLaneMapFailsGracefully) {
+  auto s = test_support::synthetic_scene(false);
+  const auto dir = fs::temp_directory_path() / ("chatsim-nolanes-" + std::to_string(::getpid()));
+  scene::save_scene(s, dir);
+  fs::remove(dir / "lanes.json");
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  const auto state = manager.chat("c", dir, "Add a car 20 m ahead that turns left.").edit_state;
+  ASSERT_EQ(state["added"].size(), 1u);
+  ASSERT_EQ(state["unresolved"].size(), 1u);
+  EXPECT_NE(state["unresolved"][0]["reason"].get<std::string>().find("no lane map"), std::string::npos);
+}

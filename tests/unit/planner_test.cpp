@@ -107,8 +107,8 @@ TEST(Planner, WithoutALaneMapPlansStraightAndSaysSo) {
   const auto r = plan(s, "a car 20 m ahead that turns left");
   ASSERT_TRUE(r.ok);
   EXPECT_NEAR(r.trajectory[0].x, 20, 1e-6);
-  ASSERT_FALSE(r.notes.empty());
-  EXPECT_NE(r.notes[0].find("no lane map"), std::string::npos);
+  ASSERT_FALSE(r.not_done.empty());
+  EXPECT_NE(r.not_done[0].find("no lane map"), std::string::npos);
 }
 
 TEST(Planner, ConesNeverMove) {
