@@ -1,6 +1,7 @@
 #include "common/scene/scene_summary.hpp"
 
 #include <map>
+#include <cstdio>
 #include <sstream>
 
 namespace chatsim::scene {
@@ -63,13 +64,16 @@ std::string summary_text(const nlohmann::json& s) {
   for (const auto& c : s["cameras"])
     o << "    " << c["name"].get<std::string>() << " " << c["width"] << "x" << c["height"] << ", horizontal FOV "
       << int(std::lround(c["hfov_deg"].get<double>())) << " deg\n";
-  o << "  frames: " << s["frames"] << " over " << s["duration_s"].get<double>() << " s ("
-    << s["frame_rate_hz"] << " Hz), " << s["images"] << " images (" << s["images_with_exposure"]
-    << " with exposure)\n";
-  o << "  ego path: " << s["ego_path_m"].get<double>() << " m\n";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "  frames: %d over %.1f s (%.1f Hz), ", s["frames"].get<int>(), s["duration_s"].get<double>(),
+                s["frame_rate_hz"].get<double>());
+  o << buf << s["images"] << " images (" << s["images_with_exposure"] << " with exposure)\n";
+  std::snprintf(buf, sizeof buf, "  ego path: %.1f m\n", s["ego_path_m"].get<double>());
+  o << buf;
   o << "  objects: " << s["objects"] << "\n";
   for (const auto& [cat, n] : s["objects_by_category"].items()) o << "    " << cat << ": " << n << "\n";
-  o << "  lanes: " << s["lanes"] << " (" << s["lane_length_m"].get<double>() << " m of centreline, source: "
+  std::snprintf(buf, sizeof buf, "%.0f", s["lane_length_m"].get<double>());
+  o << "  lanes: " << s["lanes"] << " (" << buf << " m of centreline, source: "
     << s["lanes_source"].get<std::string>() << ")\n";
   for (const auto& [type, n] : s["lanes_by_type"].items()) o << "    " << type << ": " << n << "\n";
   return o.str();
