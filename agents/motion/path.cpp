@@ -168,4 +168,40 @@ std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std
   return out;
 }
 
+std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& arc, const std::vector<double>& times,
+                                 double wheelbase, double max_steer, double max_steer_rate) {
+  std::vector<Pose2> out;
+  if (times.empty()) return out;
+  const Eigen::Vector2d p0 = path.at(arc.front());
+  double x = p0.x(), y = p0.y(), yaw = path.yaw_at(arc.front()), steer = 0;
+  const double dt = 0.01;
+  double t = times.front();
+  size_t k = 0;
+  auto reference = [&](double tt) {  // arc length of the reference at time tt
+    if (tt <= times.front()) return arc.front();
+    while (k + 1 < times.size() && times[k + 1] < tt) ++k;
+    if (k + 1 >= times.size()) return arc.back();
+    const double w = (tt - times[k]) / std::max(1e-9, times[k + 1] - times[k]);
+    return arc[k] + w * (arc[k + 1] - arc[k]);
+  };
+  out.push_back({x, y, wrap(yaw)});
+  for (size_t i = 1; i < times.size(); ++i) {
+    while (t + 1e-9 < times[i]) {
+      const double s_now = reference(t), s_next = reference(t + dt);
+      const double v = (s_next - s_now) / dt;
+      const double lookahead = std::max(3.0, 0.9 * v);
+      const Eigen::Vector2d target = path.at(s_now + lookahead);
+      const double alpha = wrap(std::atan2(target.y() - y, target.x() - x) - yaw);
+      const double want = std::clamp(std::atan2(2 * wheelbase * std::sin(alpha), lookahead), -max_steer, max_steer);
+      steer += std::clamp(want - steer, -max_steer_rate * dt, max_steer_rate * dt);
+      x += v * std::cos(yaw) * dt;
+      y += v * std::sin(yaw) * dt;
+      yaw += v / wheelbase * std::tan(steer) * dt;
+      t += dt;
+    }
+    out.push_back({x, y, wrap(yaw)});
+  }
+  return out;
+}
+
 }  // namespace chatsim::agents::motion

@@ -54,4 +54,10 @@ LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, 
 std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times,
                                    double a_lat = 3.0, double a_long = 2.5);
 
+// Drives the path with a kinematic bicycle (wheelbase, steering angle and steering rate
+// limits) following a pure-pursuit controller whose reference moves along the path as
+// `arc` says at `times`; returns the vehicle's poses at those times (yaw = body heading).
+std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& arc, const std::vector<double>& times,
+                                 double wheelbase_m = 2.8, double max_steer_rad = 0.6, double max_steer_rate = 0.8);
+
 }  // namespace chatsim::agents::motion

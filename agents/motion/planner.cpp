@@ -432,11 +432,14 @@ class Planner {
       path = lane_path(map, c.lane, c.s, c.dir, total);
     }
     const auto arc = arc_lengths_at(path, e.speed, times_);
-    e.poses.reserve(times_.size());
-    for (double q : arc) {
-      const Eigen::Vector2d p = path.at(q);
-      const double yaw = path.yaw_at(q) + (reverse_yaw ? kPi : 0);
-      e.poses.push_back({p.x(), p.y(), wrap(yaw)});
+    if (action == "static" || reverse_yaw) {
+      // Standing still, or reversing slowly along a straight lane: the path itself.
+      for (double q : arc) {
+        const Eigen::Vector2d p = path.at(q);
+        e.poses.push_back({p.x(), p.y(), wrap(path.yaw_at(q) + (reverse_yaw ? kPi : 0))});
+      }
+    } else {
+      e.poses = bicycle_track(path, arc, times_);
     }
     // The action must happen within the clip.
     const double turned = wrap(e.poses.back().yaw - e.poses.front().yaw) / kDeg;

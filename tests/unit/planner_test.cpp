@@ -125,3 +125,22 @@ TEST(Planner, BoxOverlap) {
   EXPECT_FALSE(boxes_overlap({0, 0, 0}, car, {3.9, 0, 0}, car, 0.9));
   EXPECT_TRUE(boxes_overlap({0, 0, 0}, car, {0, 0, M_PI / 2}, car));
 }
+
+// The trajectory is what a kinematic bicycle can drive: yaw rate within v * tan(max steer) / L,
+// and the tracker ends the turn on the lane it turned into.
+TEST(Planner, TrajectoriesAreDrivableByABicycleModel) {
+  const auto s = test_support::synthetic_scene();
+  const auto r = plan(s, "a car 40 m ahead that turns right");
+  ASSERT_TRUE(r.ok) << r.reason;
+  for (size_t i = 1; i < r.trajectory.size(); ++i) {
+    const double dt = r.t_s[i] - r.t_s[i - 1];
+    const double v = std::hypot(r.trajectory[i].x - r.trajectory[i - 1].x, r.trajectory[i].y - r.trajectory[i - 1].y) / dt;
+    const double yaw_rate = std::abs(std::remainder(r.trajectory[i].yaw - r.trajectory[i - 1].yaw, 2 * M_PI)) / dt;
+    EXPECT_LE(yaw_rate, v * std::tan(0.6) / 2.8 + 0.05) << "frame " << i;
+  }
+  const auto& end = r.trajectory.back();
+  const auto on = s.lanes.containing({end.x, end.y});
+  ASSERT_FALSE(on.empty());
+  EXPECT_EQ(s.lanes.lanes()[size_t(on.front().lane)].id, "south");
+  EXPECT_LT(std::abs(on.front().lateral), 1.0);
+}
