@@ -53,10 +53,22 @@ AgentOutcome Manager::call(const std::string& kind, const Conversation& c, const
 
 ChatResult Manager::chat(const std::string& id, const std::string& scene_dir, const std::string& command) {
   std::lock_guard lock(mu_);
-  const auto scene = cached_scene(scene_dir);  // a bad scene fails here, with file and field
+  cached_scene(scene_dir);  // a bad scene fails here, with file and field
   Conversation& c = conversations_[id];
   if (!c.scene_dir.empty() && c.scene_dir != scene_dir) c = Conversation{};
+  // A round that fails half-way (an agent gone) must not leave half its edits behind.
+  const Conversation before = c;
+  try {
+    return run_round(c, scene_dir, command);
+  } catch (...) {
+    c = before;
+    throw;
+  }
+}
+
+ChatResult Manager::run_round(Conversation& c, const std::string& scene_dir, const std::string& command) {
   c.scene_dir = scene_dir;
+  const size_t unresolved_before = c.unresolved.size();
   Round round;
   const std::string trimmed = command.substr(0, 2000);
   std::vector<Instruction> instructions;
@@ -79,6 +91,7 @@ ChatResult Manager::chat(const std::string& id, const std::string& scene_dir, co
     run_instruction(c, in, round);
   }
   if (!round.added_now.empty()) c.last_group = round.added_now;
+  for (size_t i = unresolved_before; i < c.unresolved.size(); ++i) c.unresolved[i]["round"] = c.rounds.size() + 1;
   c.rounds.push_back({{"command", command}, {"instructions", round.instructions}});
   ChatResult out;
   out.edit_state = edit_state(c);
@@ -86,7 +99,6 @@ ChatResult Manager::chat(const std::string& id, const std::string& scene_dir, co
   for (size_t i = 0; i < round.done.size(); ++i) msg << (i ? " " : "") << round.done[i];
   out.message = msg.str();
   if (out.message.empty()) out.message = "Nothing was changed.";
-  (void)scene;
   return out;
 }
 

@@ -60,6 +60,7 @@ class Manager {
 
  private:
   struct Round;
+  ChatResult run_round(Conversation& c, const std::string& scene_dir, const std::string& command);
   void run_instruction(Conversation& c, const Instruction& in, Round& round);
   void do_view(Conversation& c, const Instruction& in, Round& round);
   void do_delete(Conversation& c, const Instruction& in, Round& round);

@@ -107,3 +107,26 @@ TEST(Commands, NoLaneMapFailsGracefully) {
   ASSERT_EQ(state["unresolved"].size(), 1u);
   EXPECT_NE(state["unresolved"][0]["reason"].get<std::string>().find("no lane map"), std::string::npos);
 }
+
+// An agent that fails mid-round (e.g. killed) leaves the conversation as it was before the round.
+TEST(Commands, AFailedRoundChangesNothing) {
+  const auto dir = test_support::temp_dir_for_scene();
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  auto local = agents::local_caller(backend);
+  bool motion_down = false;
+  agents::manager::Manager manager(
+      [&](const std::string& kind, const agents::AgentCall& call) {
+        if (kind == "motion" && motion_down)
+          return agents::AgentOutcome::failure(agents::ErrorKind::Unavailable, "motion agent did not answer");
+        return local(kind, call);
+      },
+      backend);
+  manager.chat("c", dir, "Add a red car 20 m ahead.");
+  motion_down = true;
+  EXPECT_THROW(manager.chat("c", dir, "Delete the truck and add a bus behind me."), std::runtime_error);
+  motion_down = false;
+  const auto s = manager.chat("c", dir, "Move the view 1 m up.").edit_state;
+  EXPECT_TRUE(s["removed"].empty());       // the failed round's deletion was rolled back
+  EXPECT_EQ(s["added"].size(), 1u);
+  EXPECT_EQ(s["rounds"].size(), 2u);
+}
