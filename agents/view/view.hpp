@@ -40,7 +40,7 @@ ViewState view_state_from_json(const nlohmann::json& j);
 double ego_speed_mps(const std::string& ego_motion);
 
 // New camera-to-world poses, frames x cameras: the view offset applied in each frame's ego
-// frame (rotations about the camera's own position), and for ego motion the rig driving along
+// frame (yaw and pitch turn the whole rig about the ego origin), and for ego motion the rig driving along
 // the recorded path from frame 0 at the chosen speed.
 std::vector<std::vector<Eigen::Isometry3d>> camera_poses(const scene::Scene& scene, const ViewState& view);
 

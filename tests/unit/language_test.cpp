@@ -152,3 +152,38 @@ TEST(Language, OfflineAnswersMatchTheirSchemas) {
   EXPECT_NE(llm::validate({{"b", 1}, {"a", "x"}}, schema).find("unexpected field 'b'"), std::string::npos);
   EXPECT_NE(llm::validate(nlohmann::json::object(), schema).find("missing required field 'a'"), std::string::npos);
 }
+
+// The view agent's role function: offsets move every camera of every frame in the ego frame,
+// yaw turns the rig about its own vertical, ego motion drives along the recorded path.
+TEST(View, CameraPosesFollowTheOffsetsAndEgoMotion) {
+  chatsim::scene::Scene s;
+  chatsim::scene::Camera cam;
+  cam.name = "front";
+  cam.width = 100;
+  cam.height = 100;
+  cam.fx = cam.fy = 50;
+  cam.sensor_to_ego.translation() = Eigen::Vector3d(1.5, 0, 1.6);
+  s.cameras = {cam};
+  for (int i = 0; i < 11; ++i) {
+    chatsim::scene::Frame f;
+    f.index = i;
+    f.timestamp_s = 0.1 * i;
+    f.ego_to_world.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();  // heading +y
+    f.ego_to_world.translation() = Eigen::Vector3d(0, 1.0 * i, 0);
+    s.frames.push_back(f);
+  }
+  view::ViewState v;
+  v.translation_m = {5, 0, 0.5};
+  auto poses = view::camera_poses(s, v);
+  ASSERT_EQ(poses.size(), 11u);
+  // 5 m ahead of an ego heading +y is +y in the world.
+  EXPECT_LT((poses[3][0].translation() - Eigen::Vector3d(0, 3 + 5 + 1.5, 2.1)).norm(), 1e-9);
+  v = {};
+  v.yaw_deg = 90;
+  poses = view::camera_poses(s, v);
+  EXPECT_LT((poses[0][0].translation() - Eigen::Vector3d(-1.5, 0, 1.6)).norm(), 1e-9);  // rotated about the ego origin
+  v = {};
+  v.ego_motion = "slow";
+  poses = view::camera_poses(s, v);
+  EXPECT_NEAR(poses[10][0].translation().y(), 1.5 + view::ego_speed_mps("slow") * 1.0, 1e-9);
+}
