@@ -11,5 +11,6 @@ void add_bench_command(CLI::App& app, int& result);
 void add_scene_command(CLI::App& app, int& result);
 void add_plan_command(CLI::App& app, int& result);
 void add_eval_command(CLI::App& app, int& result);
+void add_topic_command(CLI::App& app, int& result);
 
 }  // namespace chatsim::cli
