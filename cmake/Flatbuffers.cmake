@@ -23,7 +23,7 @@ function(chatsim_flatbuffers)
   add_custom_command(
     OUTPUT ${headers}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
-    COMMAND flatbuffers::flatc --cpp --scoped-enums --reflect-names
+    COMMAND flatbuffers::flatc --cpp --scoped-enums --reflect-names --gen-mutable
             -I ${schema_dir} -o ${out_dir} ${abs_schemas}
     DEPENDS ${abs_schemas}
     COMMENT "flatc: generating C++ for ${ARG_TARGET}"

@@ -9,6 +9,7 @@ PACKAGES=(
   flatbuffers-compiler libflatbuffers-dev
   libeigen3-dev libopencv-dev libopenimageio-dev libopenexr-dev libembree-dev
   libcurl4-openssl-dev googletest libgtest-dev libgmock-dev
+  zlib1g-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libcpp-httplib-dev
   libtinygltf-dev libzstd-dev
   # OpenImageIO's and Imath's CMake files reference these: find_package fails without them.
@@ -22,6 +23,12 @@ for p in "${PACKAGES[@]}"; do
     missing+=("$p")
   fi
 done
+# Node.js and npm (the MCAP test reads our recordings with the npm @mcap packages): keep the
+# machine's own when it has one (it may not come from Debian), else take Debian's.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  missing+=(nodejs npm)
+fi
+
 [ ${#missing[@]} -eq 0 ] && exit 0
 
 SUDO=""

@@ -136,6 +136,16 @@ uint64_t Node::next_seq(std::string_view topic) {
   return ++it->second;
 }
 
+PublishStatus Node::republish(std::string_view topic, std::string_view bytes) {
+  if (!started_ || shut_down_) throw BusError("node '" + options_.name + "' is not running");
+  zmq::message_t topic_frame(topic.data(), topic.size());
+  zmq::message_t body(bytes.data(), bytes.size());
+  if (!pub_->send(topic_frame, zmq::send_flags::sndmore | zmq::send_flags::dontwait)) return PublishStatus::WouldBlock;
+  pub_->send(body, zmq::send_flags::none);
+  stats_.sent.fetch_add(1, std::memory_order_relaxed);
+  return PublishStatus::Sent;
+}
+
 PublishStatus Node::publish(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb,
                             msgs::Payload type, flatbuffers::Offset<void> payload,
                             const PublishOptions& options) {

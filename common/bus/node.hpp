@@ -91,6 +91,10 @@ class Node {
                         msgs::Payload type, flatbuffers::Offset<void> payload,
                         const PublishOptions& options = {});
 
+  // Sends an already built Envelope unchanged (bag play): its header keeps the original sender
+  // and sequence number. The bytes must verify as an Envelope whose topic is `topic`.
+  PublishStatus republish(std::string_view topic, std::string_view envelope_bytes);
+
   // Request/response: publishes on topic and waits for the response until timeout. Other
   // messages arriving meanwhile are queued and dispatched by the next spin_once().
   CallResult call(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb, msgs::Payload type,

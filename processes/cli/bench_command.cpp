@@ -2,6 +2,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "bench/bag_bench.hpp"
 #include "bench/bus_bench.hpp"
 #include "common/util/exit_codes.hpp"
 #include "processes/cli/commands.hpp"
@@ -53,6 +54,32 @@ int run_bus_bench(BusBenchArgs a) {
   return exit_code::kOk;
 }
 
+struct BagBenchArgs {
+  bench::BagBenchConfig config;
+  std::string out = "bench/results/bag.json";
+};
+
+int run_bag_bench(const BagBenchArgs& a) {
+  std::cerr << "bench bag: " << a.config.fps << " frames/s of " << a.config.width << "x" << a.config.height
+            << " JPEG through the bus into the recorder for " << a.config.seconds << " s..." << std::endl;
+  const auto r = bench::run_bag_bench(a.config);
+  std::printf("published %d, recorded %llu, missing %lld, lost (gaps) %llu; frame %.0f KB = %.1f MB/s stream\n",
+              r["published"].get<int>(), (unsigned long long)r["recorded"].get<uint64_t>(),
+              (long long)r["missing"].get<int64_t>(), (unsigned long long)r["lost"].get<uint64_t>(),
+              r["frame"]["jpeg_bytes"].get<double>() / 1e3, r["stream_mb_per_s"].get<double>());
+  std::printf("writer %.0f MB/s vs plain file writes %.0f MB/s (ratio %.2f); headroom over the stream x%.1f\n",
+              r["writer_mb_per_s"].get<double>(), r["raw_file_mb_per_s"].get<double>(),
+              r["ratios"]["writer_vs_raw_file"].get<double>(), r["ratios"]["writer_headroom_vs_stream"].get<double>());
+  if (!a.out.empty()) {
+    const std::filesystem::path out(a.out);
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    std::ofstream(out.string() + ".tmp") << r.dump(2) << "\n";
+    std::filesystem::rename(out.string() + ".tmp", out);
+    std::printf("wrote %s\n", out.c_str());
+  }
+  return r["missing"].get<int64_t>() == 0 && r["lost"].get<uint64_t>() == 0 ? exit_code::kOk : exit_code::kFailure;
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app, int& result) {
@@ -67,6 +94,12 @@ void add_bench_command(CLI::App& app, int& result) {
   bus->add_option("--image-count", args->config.image_count, "number of 6 MB messages");
   bus->add_option("--repeats", args->config.repeats, "best of N per throughput measurement");
   bus->callback([args, &result] { result = run_bus_bench(*args); });
+  auto bag_args = std::make_shared<BagBenchArgs>();
+  auto* bag = bench->add_subcommand(
+      "bag", "The recorder under a 30 frames/s stream of 1920x1280 JPEG frames: loss and writer throughput");
+  bag->add_option("--out", bag_args->out, "JSON report path (empty: do not write)")->capture_default_str();
+  bag->add_option("--seconds", bag_args->config.seconds, "stream length")->check(CLI::PositiveNumber);
+  bag->callback([bag_args, &result] { result = run_bag_bench(*bag_args); });
 }
 
 }  // namespace chatsim::cli
