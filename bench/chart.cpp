@@ -52,7 +52,11 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   for (size_t i = 0; i < pts.size(); ++i) {
     const cv::Point c(px(pts[i].x), py(pts[i].y));
     cv::circle(img, c, 6, colors[i % 6], cv::FILLED, cv::LINE_AA);
-    cv::putText(img, pts[i].label, c + cv::Point(9, -8 + int(i % 3) * 12), cv::FONT_HERSHEY_SIMPLEX, 0.45, colors[i % 6], 1,
+    int baseline = 0;
+    const cv::Size text = cv::getTextSize(pts[i].label, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline);
+    // Labels near the right edge go on the point's left, so none is cut off.
+    const int dx = c.x + 9 + text.width > w - 5 ? -9 - text.width : 9;
+    cv::putText(img, pts[i].label, c + cv::Point(dx, -8 + int(i % 3) * 12), cv::FONT_HERSHEY_SIMPLEX, 0.45, colors[i % 6], 1,
                 cv::LINE_AA);
   }
   std::filesystem::create_directories(std::filesystem::absolute(file).parent_path());

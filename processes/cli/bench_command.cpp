@@ -1,8 +1,10 @@
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "bench/bag_bench.hpp"
+#include "bench/chart.hpp"
 #include "bench/bus_bench.hpp"
 #include "common/util/exit_codes.hpp"
 #include "processes/cli/commands.hpp"
@@ -50,6 +52,19 @@ int run_bus_bench(BusBenchArgs a) {
     std::ofstream(tmp) << report.dump(2) << "\n";
     std::filesystem::rename(tmp, out);
     std::printf("wrote %s\n", out.c_str());
+    auto delivered = [&](const char* side, const char* kind) {
+      const auto& m = report[side][kind];
+      return 1.0 - m["lost"].get<double>() / std::max(1.0, m["messages"].get<double>());
+    };
+    std::filesystem::path png = out;
+    png.replace_extension(".png");
+    bench::write_scatter_png(png, {"Bus vs raw ZeroMQ (same run): throughput and delivery", "throughput [MB/s]",
+                                   "share delivered", true},
+                             {{"raw 1 KB", report["raw_zmq"]["small"]["mb_per_s"].get<double>(), delivered("raw_zmq", "small")},
+                              {"bus 1 KB", report["bus"]["small"]["mb_per_s"].get<double>(), delivered("bus", "small")},
+                              {"raw 6 MB", report["raw_zmq"]["image"]["mb_per_s"].get<double>(), delivered("raw_zmq", "image")},
+                              {"bus 6 MB", report["bus"]["image"]["mb_per_s"].get<double>(), delivered("bus", "image")}});
+    std::printf("wrote %s\n", png.c_str());
   }
   return exit_code::kOk;
 }
@@ -76,6 +91,15 @@ int run_bag_bench(const BagBenchArgs& a) {
     std::ofstream(out.string() + ".tmp") << r.dump(2) << "\n";
     std::filesystem::rename(out.string() + ".tmp", out);
     std::printf("wrote %s\n", out.c_str());
+    std::filesystem::path png = out;
+    png.replace_extension(".png");
+    const double recorded = r["recorded"].get<double>() / std::max(1, r["published"].get<int>());
+    bench::write_scatter_png(png, {"Recorder under a 30 fps 1920x1280 JPEG stream (same run)", "throughput [MB/s]",
+                                   "share of frames recorded", true},
+                             {{"camera stream (needed)", r["stream_mb_per_s"].get<double>(), recorded},
+                              {"recorder: zstd + disk", r["writer_mb_per_s"].get<double>(), recorded},
+                              {"baseline: plain file writes", r["raw_file_mb_per_s"].get<double>(), 1.0}});
+    std::printf("wrote %s\n", png.c_str());
   }
   return r["missing"].get<int64_t>() == 0 && r["lost"].get<uint64_t>() == 0 ? exit_code::kOk : exit_code::kFailure;
 }
