@@ -47,6 +47,7 @@ class Reader {
   void check_keys(const YAML::Node& map, const std::vector<std::string>& allowed,
                   const std::string& where) const {
     for (const auto& kv : map) {
+      if (!kv.first.IsScalar()) fail(kv.first, "a key in " + where + " must be a plain name, not a list or a map");
       const std::string key = kv.first.as<std::string>();
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
       std::string hint;
@@ -170,7 +171,16 @@ const ProcessSpec* LaunchFile::find(const std::string& name) const {
 }
 
 LaunchFile parse_launch_file(const std::string& text, const std::filesystem::path& path) {
-  return Reader(path).file(text);
+  try {
+    return Reader(path).file(text);
+  } catch (const YAML::Exception& e) {
+    // Anything yaml-cpp refuses that our checks did not name first: still the file's fault.
+    std::ostringstream os;
+    os << path.string();
+    if (e.mark.line >= 0) os << ":" << e.mark.line + 1 << ":" << e.mark.column + 1;
+    os << ": " << e.msg;
+    throw LaunchFileError(os.str());
+  }
 }
 
 LaunchFile load_launch_file(const std::filesystem::path& path) {

@@ -130,3 +130,33 @@ TEST(Commands, AFailedRoundChangesNothing) {
   EXPECT_EQ(s["added"].size(), 1u);
   EXPECT_EQ(s["rounds"].size(), 2u);
 }
+
+// The bad-command catalogue: each gets a clear refusal in `unresolved`, nothing crashes, and
+// the conversation's earlier rounds are kept.
+TEST(Commands, BadCommandsAreRefusedClearlyAndLoseNothing) {
+  const auto dir = test_support::temp_dir_for_scene();
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  auto base = manager.chat("c", dir, "Add a red car 20 m ahead. Move the view 1 m up.").edit_state;
+  ASSERT_EQ(base["added"].size(), 1u);
+  const std::vector<std::string> bad = {
+      "",
+      "   ",
+      "asdkj qwe zzz",
+      std::string(10000, 'x'),
+      "Ajoute une voiture rouge devant moi.",
+      "添加一辆红色的车",
+      "Add 500 cars in front of me.",
+      "Delete the purple helicopter.",
+      "Make the green truck I added turn left.",
+      "Put back the deleted car.",
+  };
+  for (const auto& command : bad) {
+    const auto before = manager.chat("c", dir, "Move the view 0 m up.").edit_state["unresolved"].size();
+    const auto s = manager.chat("c", dir, command).edit_state;
+    EXPECT_GT(s["unresolved"].size(), before) << "no refusal for: " << command.substr(0, 60);
+    EXPECT_EQ(s["added"].size(), 1u) << command.substr(0, 60);
+    EXPECT_EQ(s["added"][0]["trajectory"], base["added"][0]["trajectory"]) << command.substr(0, 60);
+    EXPECT_DOUBLE_EQ(s["view"]["translation_m"][2].get<double>(), 1.0) << command.substr(0, 60);
+  }
+}

@@ -95,3 +95,14 @@ TEST(LaunchFile, ShippedLaunchFilesAreValid) {
     EXPECT_EQ(f.processes.size(), 8u) << name;
   }
 }
+
+// Found by fuzzing (fuzz/corpus/launch_file keeps the input): a key that is itself a list.
+TEST(LaunchFile, ComplexKeysAreRefusedNotACrash) {
+  const std::string text = "bus: tcp://127.0.0.1:7700\nprocesses:\n  - name: a\n    executable: x\n? - name: b\n  : 1\n";
+  try {
+    chatsim::launch::parse_launch_file(text, "odd.yaml");
+    FAIL() << "expected LaunchFileError";
+  } catch (const chatsim::launch::LaunchFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("odd.yaml:"), std::string::npos) << e.what();
+  }
+}
