@@ -3,10 +3,12 @@
 #include <spdlog/spdlog.h>
 
 #include "agents/core/agent_registry.hpp"
+#include "processes/agent_liveness.hpp"
 #include "common/bus/endpoint.hpp"
 #include "common/bus/errors.hpp"
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
+#include "common/util/clock.hpp"
 #include "common/util/exit_codes.hpp"
 #include "common/util/log.hpp"
 #include "common/util/signals.hpp"
@@ -104,16 +106,26 @@ int parse_or_exit(CLI::App& app, int argc, char** argv) {
   return -1;
 }
 
-agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout) {
-  return [&node, timeout](const std::string& kind, const agents::AgentCall& call) {
+agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout,
+                                        const AgentLiveness* liveness) {
+  return [&node, timeout, liveness](const std::string& kind, const agents::AgentCall& call) {
     flatbuffers::FlatBufferBuilder fbb(1024);
     const auto req = msgs::CreateAgentRequestDirect(fbb, kind.c_str(), call.action.c_str(), call.scene.c_str(),
                                                     call.args.dump().c_str());
-    const auto result = node.call(bus::topics::agent_request(kind), fbb, msgs::Payload::AgentRequest, req.Union(), timeout);
+    std::function<std::optional<std::string>()> give_up;
+    if (liveness != nullptr) {
+      const auto sent_to = liveness->snapshot(kind, mono_s());
+      give_up = [liveness, kind, sent_to] { return liveness->lost(kind, sent_to, mono_s()); };
+    }
+    const auto result =
+        node.call(bus::topics::agent_request(kind), fbb, msgs::Payload::AgentRequest, req.Union(), timeout, give_up);
     if (!result.ok())
-      return agents::AgentOutcome::failure(agents::ErrorKind::Unavailable,
-                                           "the " + kind + " agent did not answer (" + result.error_message +
-                                               "); is chatsim-" + kind + " running on this bus?");
+      return agents::AgentOutcome::failure(
+          agents::ErrorKind::Unavailable,
+          result.error == msgs::ErrorCode::Unavailable && result.error_message.find("agent failed") != std::string::npos
+              ? result.error_message
+              : "the " + kind + " agent did not answer (" + result.error_message + "); is chatsim-" + kind +
+                    " running on this bus?");
     if (const auto* err = result.response->payload<msgs::Error>())
       return agents::AgentOutcome::failure(agents::ErrorKind::Internal,
                                            "the " + kind + " agent failed: " + std::string(bus::view(err->message())));
@@ -181,10 +193,17 @@ int agent_main(int argc, char** argv, const std::string& kind) {
   AgentProcessOptions options;
   add_node_options(app, options);
   if (const int code = parse_or_exit(app, argc, argv); code >= 0) return code;
-  return serve_agent(options, kind, [&](bus::Node& node) {
-    // The manager reaches the other agents over the bus; each answer may take a while.
-    return agents::make_agent(kind, kind == "manager" ? bus_caller(node, std::chrono::seconds(60))
-                                                      : agents::manager::AgentCaller{});
+  auto liveness = std::make_shared<AgentLiveness>();
+  return serve_agent(options, kind, [&, liveness](bus::Node& node) {
+    if (kind != "manager") return agents::make_agent(kind);
+    // The manager reaches the other agents over the bus; an answer may take a while, but a
+    // dead agent is noticed from its heartbeats within seconds.
+    node.subscribe(std::string(bus::topics::kHeartbeat), [liveness](const bus::Message& m) {
+      if (const auto* hb = m.payload<msgs::Heartbeat>())
+        liveness->observe(std::string(bus::view(hb->node())), std::string(bus::view(hb->kind())), hb->pid(),
+                          hb->period_ms() / 1000.0, hb->state() == msgs::NodeState::Stopping, mono_s());
+    });
+    return agents::make_agent(kind, bus_caller(node, std::chrono::seconds(60), liveness.get()));
   });
 }
 

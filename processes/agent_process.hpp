@@ -37,8 +37,12 @@ using AgentFactory = std::function<std::unique_ptr<agents::Agent>(bus::Node& nod
 // /chat/request) until SIGINT/SIGTERM. Returns the process exit code.
 int serve_agent(const AgentProcessOptions& options, const std::string& kind, const AgentFactory& make);
 
+class AgentLiveness;
+
 // Calls another agent over the bus: AgentRequest out, AgentResponse back, within timeout.
-agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout);
+// With liveness, a call ends as soon as the agents it went to are dead or restarted.
+agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout,
+                                        const AgentLiveness* liveness = nullptr);
 
 // The whole main() of an agent process with no options of its own.
 int agent_main(int argc, char** argv, const std::string& kind);

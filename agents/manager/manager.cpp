@@ -197,6 +197,7 @@ bool Manager::add_one(Conversation& c, const json& asset_args, const json& motio
   }
   const auto plan = call("motion", c, "plan", args);
   if (!plan.ok) {
+    if (plan.error != ErrorKind::BadRequest) throw std::runtime_error("motion agent: " + plan.message);
     c.unresolved.push_back({{"instruction", text}, {"reason", plan.message}});
     return false;
   }
@@ -297,6 +298,7 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
     }
     const auto plan = call("motion", c, "plan", args);
     if (!plan.ok) {
+      if (plan.error != ErrorKind::BadRequest) throw std::runtime_error("motion agent: " + plan.message);
       c.unresolved.push_back({{"instruction", in.text}, {"reason", v.id + ": " + plan.message}});
       continue;
     }

@@ -242,7 +242,8 @@ void Node::spin(const std::atomic<bool>& stop) {
 
 CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb,
                       msgs::Payload type, flatbuffers::Offset<void> payload,
-                      std::chrono::milliseconds timeout) {
+                      std::chrono::milliseconds timeout,
+                      const std::function<std::optional<std::string>()>& give_up) {
   const std::string correlation = options_.name + "/" + topics::hex(instance_) + "/" +
                                   std::to_string(++call_counter_);
   const auto deadline = std::chrono::steady_clock::now() + timeout;
@@ -259,8 +260,19 @@ CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fb
     if (now >= deadline) break;
     // Rounded up: never give up before the deadline the request carries.
     const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - now);
+    if (give_up) {
+      if (auto reason = give_up()) {
+        result.error = msgs::ErrorCode::Unavailable;
+        result.error_message = *reason;
+        return result;
+      }
+    }
     auto m = receive(std::min(left, std::chrono::milliseconds(100)));
     if (!m) continue;
+    if (m->topic() == topics::kHeartbeat) {
+      dispatch(*m);
+      continue;
+    }
     if (m->topic() == reply_topic_) {
       if (m->correlation_id() == correlation) {
         result.response = std::move(m);

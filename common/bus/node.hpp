@@ -97,8 +97,12 @@ class Node {
 
   // Request/response: publishes on topic and waits for the response until timeout. Other
   // messages arriving meanwhile are queued and dispatched by the next spin_once().
+  // `give_up`, checked about every 100 ms, may end the wait early with a reason (e.g. the
+  // server's heartbeats stopped). Heartbeats arriving meanwhile are dispatched at once, so
+  // such checks see fresh liveness.
   CallResult call(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb, msgs::Payload type,
-                  flatbuffers::Offset<void> payload, std::chrono::milliseconds timeout);
+                  flatbuffers::Offset<void> payload, std::chrono::milliseconds timeout,
+                  const std::function<std::optional<std::string>()>& give_up = {});
 
   // Serves requests on topic: handler builds the response into fbb and returns its payload.
   // Exceptions become Error responses; requests past their deadline are dropped and counted.
