@@ -45,6 +45,7 @@ Manager::Manager(AgentCaller caller, std::shared_ptr<llm::Backend> backend)
 void Manager::reset(const std::string& id) {
   std::lock_guard lock(mu_);
   conversations_.erase(id);
+  last_used_.erase(id);
 }
 
 AgentOutcome Manager::call(const std::string& kind, const Conversation& c, const std::string& action, json args) {
@@ -54,6 +55,13 @@ AgentOutcome Manager::call(const std::string& kind, const Conversation& c, const
 ChatResult Manager::chat(const std::string& id, const std::string& scene_dir, const std::string& command) {
   std::lock_guard lock(mu_);
   cached_scene(scene_dir);  // a bad scene fails here, with file and field
+  if (!conversations_.count(id) && conversations_.size() >= kMaxConversations) {
+    const auto oldest = std::min_element(last_used_.begin(), last_used_.end(),
+                                         [](const auto& a, const auto& b) { return a.second < b.second; });
+    conversations_.erase(oldest->first);
+    last_used_.erase(oldest);
+  }
+  last_used_[id] = ++uses_;
   Conversation& c = conversations_[id];
   if (!c.scene_dir.empty() && c.scene_dir != scene_dir) c = Conversation{};
   // A round that fails half-way (an agent gone) must not leave half its edits behind.

@@ -51,6 +51,8 @@ struct ChatResult {
 class Manager {
  public:
   static constexpr int kMaxAddedPerInstruction = 40;
+  // Conversations kept; the least recently used beyond this are forgotten (bounded memory).
+  static constexpr size_t kMaxConversations = 64;
 
   Manager(AgentCaller caller, std::shared_ptr<llm::Backend> backend);
 
@@ -80,6 +82,8 @@ class Manager {
   std::shared_ptr<llm::Backend> backend_;
   std::mutex mu_;
   std::map<std::string, Conversation> conversations_;
+  std::map<std::string, uint64_t> last_used_;  // conversation -> use counter
+  uint64_t uses_ = 0;
 };
 
 // The manager as an Agent: action "chat" (args: command, conversation_id) and "reset".
