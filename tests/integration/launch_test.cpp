@@ -6,6 +6,8 @@
 #include <fstream>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
 #include "common/launch/process_tree.hpp"
@@ -187,4 +189,39 @@ TEST(Launch, MissingExecutableIsAClearFailure) {
   ASSERT_TRUE(status);
   EXPECT_NE(WEXITSTATUS(*status), 0);
   EXPECT_NE(log.find("chatsim-nonexistent"), std::string::npos) << log;
+}
+
+// The bus proxy killed with -9: the launcher respawns it on the same port, and the agents,
+// never restarted, answer through the new proxy (ZeroMQ reconnects and re-subscribes).
+TEST(Launch, AProxyRestartNeedsNoAgentRestart) {
+  const auto file = temp_path("proxy-restart.yaml");
+  std::ofstream(file) << "processes:\n"
+                         "  - {name: bus, kind: bus, executable: chatsim-bus, respawn: always, respawn_delay_s: 0.2}\n"
+                         "  - {name: view, executable: chatsim-view}\n";
+  LaunchedGraph g("proxy-restart", {file.string(), "--bus", "tcp://127.0.0.1:0"});
+  ASSERT_FALSE(g.endpoint.empty()) << read_file(g.log);
+  ASSERT_TRUE(g.watcher->wait_for("view", 10s)) << read_file(g.log);
+  ASSERT_TRUE(g.watcher->wait_for("bus", 10s)) << read_file(g.log);
+  const int view_pid = g.watcher->pids["view"];
+  const int bus_pid = g.watcher->pids["bus"];
+  kill(bus_pid, SIGKILL);
+  g.watcher->pids.clear();
+  // The same view process beats again through the respawned proxy...
+  ASSERT_TRUE(g.watcher->until([&] { return g.watcher->pids.count("bus") && g.watcher->pids["bus"] != bus_pid &&
+                                            g.watcher->pids.count("view"); },
+                               10s))
+      << read_file(g.log);
+  EXPECT_EQ(g.watcher->pids["view"], view_pid);
+  // ... and answers requests.
+  flatbuffers::FlatBufferBuilder fbb;
+  const auto req = msgs::CreateAgentRequestDirect(fbb, "view", "adjust", "", R"({"instruction": "move 5 m ahead"})");
+  const auto r = g.node->call(bus::topics::agent_request("view"), fbb, msgs::Payload::AgentRequest, req.Union(), 5s);
+  ASSERT_TRUE(r.ok()) << r.error_message;
+  const auto* resp = r.response->payload<msgs::AgentResponse>();
+  ASSERT_NE(resp, nullptr);
+  EXPECT_TRUE(resp->ok());
+  EXPECT_EQ(nlohmann::json::parse(bus::view(resp->result_json()))["view"]["translation_m"][0], 5.0);
+  g.node->shutdown();
+  kill(g.launcher.pid, SIGINT);
+  EXPECT_TRUE(g.launcher.wait(10s));
 }
