@@ -37,11 +37,6 @@ void MotionIntent::merge(const MotionIntent& o) {
   if (o.chase) chase = o.chase;
 }
 
-bool MotionIntent::empty() const {
-  return !placement && !distance_m && !distance_word && !lane && !relative && !action && !speed && !speed_mps &&
-         !direction && !wrong_way && !chase;
-}
-
 nlohmann::json to_json(const MotionIntent& m) {
   nlohmann::json j = nlohmann::json::object();
   if (m.placement) j["placement"] = *m.placement;

@@ -30,7 +30,6 @@ struct MotionIntent {
 
   // Fields set in `over` replace ours (a revision).
   void merge(const MotionIntent& over);
-  bool empty() const;
 };
 
 nlohmann::json to_json(const MotionIntent& intent);

@@ -493,7 +493,6 @@ class Planner {
     else if (!m_.speed_mps) result.resolved.speed = e.speed < 6 ? "slow" : e.speed > 10 ? "fast" : "normal";
     const auto& start = e.poses.front();
     const Eigen::Vector2d pe = ego_.to_ego({start.x, start.y});
-    const double angle = std::atan2(pe.y(), pe.x()) / kDeg;
     if (!m_.relative) result.resolved.placement = m_.placement;
     result.resolved.distance_m = std::round(pe.norm() * 10) / 10;
     const bool legal = c.dir == legal_dir(scene_.lanes.lanes()[size_t(c.lane)]) ||
@@ -504,7 +503,6 @@ class Planner {
                                                    e.poses[std::min<size_t>(e.poses.size() - 1, 10)].y);
       result.resolved.direction = (q - p).dot(ego_.p - p) > 0 ? "toward" : "away";
     }
-    (void)angle;
     return result;
   }
 
