@@ -156,7 +156,10 @@ struct BusHarness {
     forwarding.join();
   }
   bus::NodeOptions options(const std::string& name) const {
-    bus::NodeOptions o{name, "bench", proxy->endpoint()};
+    bus::NodeOptions o;
+    o.name = name;
+    o.kind = "bench";
+    o.bus = proxy->endpoint();
     o.heartbeat_period = 0ms;
     o.send_hwm = o.receive_hwm = 100000;
     return o;

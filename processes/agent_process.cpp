@@ -90,6 +90,8 @@ void add_node_options(CLI::App& app, AgentProcessOptions& o) {
   app.add_option("--heartbeat-ms", o.heartbeat_ms, "heartbeat period in ms")->check(CLI::Range(10, 60000));
   app.add_option("--handshake-timeout-ms", o.handshake_timeout_ms,
                  "how long to wait for the bus proxy at start")->check(CLI::Range(100, 600000));
+  app.add_option("--curve-keys", o.curve_keys,
+                 "CURVE keys folder (bus.pub and <name>.pub/.secret): encrypted, authenticated bus");
 }
 
 int parse_or_exit(CLI::App& app, int argc, char** argv) {
@@ -158,6 +160,15 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
   no.bus = options.bus.empty() ? bus::default_bus_endpoint() : options.bus;
   no.heartbeat_period = std::chrono::milliseconds(options.heartbeat_ms);
   no.handshake_timeout = std::chrono::milliseconds(options.handshake_timeout_ms);
+  if (!options.curve_keys.empty()) {
+    try {
+      no.curve = bus::curve_client_from_dir(options.curve_keys, no.name);
+    } catch (const std::exception& e) {
+      init_logging(no.name);
+      spdlog::error("{}", e.what());
+      return exit_code::kUsage;
+    }
+  }
   init_logging(no.name);
   try {
     bus::Node node(no);

@@ -22,9 +22,10 @@ struct AgentProcessOptions {
   std::string kind;
   int heartbeat_ms = 500;
   int handshake_timeout_ms = 10000;
+  std::string curve_keys;  // folder with bus.pub and <name>.{pub,secret}: CURVE on the bus
 };
 
-// --bus, --name, --heartbeat-ms, --handshake-timeout-ms.
+// --bus, --name, --heartbeat-ms, --handshake-timeout-ms, --curve-keys.
 void add_node_options(CLI::App& app, AgentProcessOptions& options);
 
 // Parses argv; returns -1 to go on, else the exit code to return (help: 0, bad usage: 2).

@@ -31,13 +31,21 @@ int main(int argc, char** argv) {
   const std::string requested = options.bus.empty() ? bus::default_bus_endpoint() : options.bus;
   try {
     auto context = std::make_shared<zmq::context_t>(1);
-    bus::Proxy proxy(context, requested, hwm);
+    bus::CurveServer curve;
+    if (!options.curve_keys.empty()) curve = bus::curve_server_from_dir(options.curve_keys);
+    bus::Proxy proxy(context, requested, hwm, curve);
+    if (curve.enabled())
+      spdlog::info("CURVE on: {} authorized keys from {}", curve.authorized.size(), options.curve_keys);
     std::atomic<bool> proxy_stop{false};
     std::thread forwarding([&] { proxy.run(proxy_stop); });
 
     // Its own node proves the proxy forwards, then beats like every other process.
-    bus::NodeOptions no{name, "bus", proxy.endpoint()};
+    bus::NodeOptions no;
+    no.name = name;
+    no.kind = "bus";
+    no.bus = proxy.endpoint();
     no.heartbeat_period = std::chrono::milliseconds(options.heartbeat_ms);
+    if (curve.enabled()) no.curve = bus::curve_client_from_dir(options.curve_keys, "bus");
     bus::Node node(no, context);
     node.start();
     if (!endpoint_file.empty()) {  // written whole, then renamed: readers never see half of it

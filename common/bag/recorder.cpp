@@ -116,6 +116,7 @@ RecordReport record(const RecordOptions& o, const std::atomic<bool>& stop,
   bus::NodeOptions no;
   no.name = "bag-record-" + std::to_string(getpid());
   no.kind = "recorder";
+  no.curve = bus::curve_client_from_env();
   no.bus = o.bus;  // it beats, so launchers and tests can see it is up
   std::unique_ptr<bus::Node> node;
   try {
@@ -192,6 +193,7 @@ uint64_t play(const PlayOptions& o, const std::atomic<bool>& stop) {
   bus::NodeOptions no;
   no.name = "bag-play-" + std::to_string(getpid());
   no.kind = "player";
+  no.curve = bus::curve_client_from_env();
   no.bus = o.bus;
   bus::Node node(no);
   node.start();

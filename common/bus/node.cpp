@@ -31,6 +31,7 @@ void configure(zmq::socket_t& s, const NodeOptions& o) {
   s.set(zmq::sockopt::linger, o.linger_ms);
   s.set(zmq::sockopt::sndhwm, o.send_hwm);
   s.set(zmq::sockopt::rcvhwm, o.receive_hwm);
+  apply_curve_client(s, o.curve);
 }
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }

@@ -17,6 +17,7 @@
 #include <flatbuffers/flatbuffers.h>
 #include <zmq.hpp>
 
+#include "common/bus/curve.hpp"
 #include "common/bus/message.hpp"
 #include "common/bus/sequence_tracker.hpp"
 
@@ -33,6 +34,7 @@ struct NodeOptions {
   int linger_ms = 200;              // finite linger: never hang on exit
   int send_hwm = 10000;
   int receive_hwm = 10000;
+  CurveClient curve;                // empty: no encryption or authentication
 };
 
 struct NodeStats {

@@ -13,11 +13,15 @@ int port_of(const std::string& endpoint) {
   return std::stoi(endpoint.substr(endpoint.rfind(':') + 1));
 }
 
-std::unique_ptr<zmq::socket_t> make_socket(zmq::context_t& ctx, zmq::socket_type type, int hwm) {
+std::unique_ptr<zmq::socket_t> make_socket(zmq::context_t& ctx, zmq::socket_type type, int hwm, const CurveServer& curve) {
   auto s = std::make_unique<zmq::socket_t>(ctx, type);
   s->set(zmq::sockopt::linger, 0);
   s->set(zmq::sockopt::sndhwm, hwm);
   s->set(zmq::sockopt::rcvhwm, hwm);
+  if (curve.enabled()) {
+    s->set(zmq::sockopt::curve_secretkey, curve.secret_key);
+    apply_curve_server(*s);
+  }
   return s;
 }
 
@@ -39,18 +43,21 @@ std::optional<size_t> forward(zmq::socket_t& from, zmq::socket_t& to) {
 
 }  // namespace
 
-Proxy::Proxy(std::shared_ptr<zmq::context_t> context, const std::string& bus, int hwm)
+Proxy::~Proxy() = default;
+
+Proxy::Proxy(std::shared_ptr<zmq::context_t> context, const std::string& bus, int hwm, const CurveServer& curve)
     : context_(std::move(context)) {
+  if (curve.enabled()) zap_ = std::make_unique<ZapAuthenticator>(*context_, curve.authorized);
   if (asks_for_os_chosen_port(bus)) {
     // OS-chosen ports: take the XSUB port the OS gives, try the next one for XPUB.
     const std::string host = bus.substr(6, bus.size() - 6 - 2);  // between "tcp://" and ":0"
 
     for (int attempt = 0; attempt < 50 && endpoint_.empty(); ++attempt) {
-      xsub_ = make_socket(*context_, zmq::socket_type::xsub, hwm);
+      xsub_ = make_socket(*context_, zmq::socket_type::xsub, hwm, curve);
       xsub_->bind("tcp://" + host + ":0");
       const int port = port_of(xsub_->get(zmq::sockopt::last_endpoint));
       if (port >= 65535) continue;
-      xpub_ = make_socket(*context_, zmq::socket_type::xpub, hwm);
+      xpub_ = make_socket(*context_, zmq::socket_type::xpub, hwm, curve);
       try {
         xpub_->bind("tcp://" + host + ":" + std::to_string(port + 1));
         endpoint_ = tcp_bus_endpoint(host, port);
@@ -62,8 +69,8 @@ Proxy::Proxy(std::shared_ptr<zmq::context_t> context, const std::string& bus, in
     return;
   }
   const BusEndpoints ep = split_bus_endpoint(bus);
-  xsub_ = make_socket(*context_, zmq::socket_type::xsub, hwm);
-  xpub_ = make_socket(*context_, zmq::socket_type::xpub, hwm);
+  xsub_ = make_socket(*context_, zmq::socket_type::xsub, hwm, curve);
+  xpub_ = make_socket(*context_, zmq::socket_type::xpub, hwm, curve);
   xsub_->bind(ep.publish);
   xpub_->bind(ep.subscribe);
   endpoint_ = bus;

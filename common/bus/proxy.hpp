@@ -8,6 +8,8 @@
 
 #include <zmq.hpp>
 
+#include "common/bus/curve.hpp"
+
 namespace chatsim::bus {
 
 struct ProxyStats {
@@ -20,7 +22,9 @@ class Proxy {
  public:
   // Binds both sockets. A tcp endpoint with port 0 gets an OS-chosen pair of adjacent ports;
   // endpoint() then tells which. Throws zmq::error_t / std::invalid_argument on failure.
-  Proxy(std::shared_ptr<zmq::context_t> context, const std::string& bus, int hwm = 1000);
+  // With curve enabled, both sides encrypt and admit only the authorized public keys.
+  Proxy(std::shared_ptr<zmq::context_t> context, const std::string& bus, int hwm = 1000, const CurveServer& curve = {});
+  ~Proxy();
 
   // The bus endpoint nodes should use (the real port when 0 was asked for).
   const std::string& endpoint() const { return endpoint_; }
@@ -29,9 +33,11 @@ class Proxy {
   void run(const std::atomic<bool>& stop);
 
   const ProxyStats& stats() const { return stats_; }
+  uint64_t refused_connections() const { return zap_ ? zap_->refused() : 0; }
 
  private:
   std::shared_ptr<zmq::context_t> context_;
+  std::unique_ptr<ZapAuthenticator> zap_;  // before the sockets: it must outlive them
   std::unique_ptr<zmq::socket_t> xsub_;
   std::unique_ptr<zmq::socket_t> xpub_;
   std::string endpoint_;

@@ -10,7 +10,7 @@
 namespace chatsim::launch {
 namespace {
 
-const std::vector<std::string> kTopKeys = {"bus", "stop_timeout_s", "processes"};
+const std::vector<std::string> kTopKeys = {"bus", "stop_timeout_s", "curve_keys", "processes"};
 const std::vector<std::string> kProcessKeys = {
     "name",          "kind",         "executable",          "args",          "env",
     "host",          "respawn",      "respawn_delay_s",     "respawn_max_delay_s",
@@ -144,6 +144,11 @@ class Reader {
     f.path = path_;
     f.bus = root["bus"] ? str(root["bus"], "bus") : "";
     if (root["stop_timeout_s"]) f.stop_timeout_s = number(root["stop_timeout_s"], "stop_timeout_s", 0.1, 600);
+    if (root["curve_keys"]) {
+      // Relative to the launch file, so a file and its keys folder travel together.
+      const std::filesystem::path keys = str(root["curve_keys"], "curve_keys");
+      f.curve_keys = keys.is_absolute() ? keys : path_.parent_path() / keys;
+    }
     const auto procs = root["processes"];
     if (!procs || !procs.IsSequence() || procs.size() == 0) {
       fail(procs ? procs : root, "'processes' must be a non-empty list");

@@ -101,6 +101,10 @@ std::vector<std::string> Launcher::command_line(const ProcessSpec& spec) const {
       argv.push_back("--endpoint-file");
       argv.push_back(bus_port_file_.string());
     }
+    if (!file_.curve_keys.empty()) {
+      argv.push_back("--curve-keys");
+      argv.push_back(file_.curve_keys.string());
+    }
   }
   if (is_local(spec.host)) return argv;
   // Remote: ssh with a pseudo-terminal, so ending ssh hangs up (and ends) the remote process.
@@ -163,6 +167,7 @@ void Launcher::ensure_bus_node(double timeout_s) {
   o.name = "launch-" + std::to_string(getpid());
   o.kind = "launcher";
   o.bus = bus_;
+  if (!file_.curve_keys.empty()) o.curve = bus::curve_client_from_dir(file_.curve_keys, "launch");
   o.handshake_timeout = std::chrono::milliseconds(static_cast<int64_t>(timeout_s * 1000));
   auto node = std::make_unique<bus::Node>(o);
   node->subscribe(std::string(bus::topics::kHeartbeat), [this](const bus::Message& m) {

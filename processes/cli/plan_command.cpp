@@ -41,6 +41,7 @@ int run_plan(const PlanArgs& a) {
     bus::NodeOptions o;
     o.name = "plan-" + std::to_string(getpid());
     o.kind = "cli";
+    o.curve = bus::curve_client_from_env();
     o.bus = graph.endpoint();
     o.heartbeat_period = std::chrono::milliseconds(0);
     bus::Node node(o);

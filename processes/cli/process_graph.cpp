@@ -28,6 +28,8 @@ bool bus_answers(const std::string& endpoint) {
     bus::NodeOptions o;
     o.name = "cli-probe-" + std::to_string(getpid());
     o.kind = "cli";
+  o.curve = bus::curve_client_from_env();
+    o.curve = bus::curve_client_from_env();
     o.bus = endpoint;
     o.heartbeat_period = std::chrono::milliseconds(0);
     o.handshake_timeout = std::chrono::milliseconds(300);
@@ -53,6 +55,8 @@ ProcessGraph::ProcessGraph(const std::string& bus, const std::vector<std::string
   }
   launch::LaunchFile file;
   file.bus = "tcp://127.0.0.1:0";
+  // With $CHATSIM_CURVE_KEYS the private graph is secured with those keys too.
+  if (const char* keys = std::getenv("CHATSIM_CURVE_KEYS"); keys != nullptr && *keys != '\0') file.curve_keys = keys;
   file.stop_timeout_s = 2;
   launch::ProcessSpec proxy;
   proxy.name = "bus";
@@ -88,6 +92,7 @@ ProcessGraph::ProcessGraph(const std::string& bus, const std::vector<std::string
   bus::NodeOptions o;
   o.name = "cli-wait-" + std::to_string(getpid());
   o.kind = "cli";
+  o.curve = bus::curve_client_from_env();
   o.bus = endpoint_;
   o.heartbeat_period = std::chrono::milliseconds(0);
   bus::Node node(o);

@@ -31,6 +31,7 @@ bus::NodeOptions node_options(const TopicArgs& a) {
   bus::NodeOptions o;
   o.name = "topic-" + std::to_string(getpid());
   o.kind = "cli";
+  o.curve = bus::curve_client_from_env();
   o.bus = a.bus.empty() ? bus::default_bus_endpoint() : a.bus;
   o.heartbeat_period = std::chrono::milliseconds(0);  // a viewer is not a participant
   o.handshake_timeout = std::chrono::milliseconds(2000);

@@ -46,7 +46,10 @@ struct LaunchedGraph {
       : log(temp_path(tag + ".log")), launcher(start(tag, std::move(args), log)) {
     endpoint = wait_endpoint(temp_path(tag + ".endpoint"), 10s);
     if (endpoint.empty()) return;
-    bus::NodeOptions o{"test-watcher", "test", endpoint};
+    bus::NodeOptions o;
+    o.name = "test-watcher";
+    o.kind = "test";
+    o.bus = endpoint;
     o.heartbeat_period = 0ms;
     node = std::make_unique<bus::Node>(o);
     watcher = std::make_unique<test_support::HeartbeatWatcher>(*node);
@@ -224,4 +227,42 @@ TEST(Launch, AProxyRestartNeedsNoAgentRestart) {
   g.node->shutdown();
   kill(g.launcher.pid, SIGINT);
   EXPECT_TRUE(g.launcher.wait(10s));
+}
+
+// A launch file with curve_keys: every process gets the keys; a tool with the "cli" key sees
+// the bus, a tool without keys is refused (exit code 3).
+TEST(Launch, CurveKeysSecureTheWholeGraph) {
+  const auto dir = temp_path("curve-graph");
+  std::filesystem::remove_all(dir);
+  ScopedProcess keys(test_support::spawn({bin("chatsim"), "keys", "new", "--dir", (dir / "keys").string(), "bus",
+                                          "launch", "cli", "view"},
+                                         "/dev/null"));
+  ASSERT_TRUE(keys.wait(10s));
+  const auto file = dir / "secure.yaml";
+  std::ofstream(file) << "curve_keys: keys\nprocesses:\n"
+                         "  - {name: bus, kind: bus, executable: chatsim-bus}\n"
+                         "  - {name: view, executable: chatsim-view}\n";
+  const auto ep_file = dir / "endpoint";
+  ScopedProcess launcher(test_support::spawn(
+      {bin("chatsim"), "launch", file.string(), "--bus", "tcp://127.0.0.1:0", "--endpoint-file", ep_file.string()},
+      (dir / "launch.log").string()));
+  const std::string endpoint = wait_endpoint(ep_file, 10s);
+  ASSERT_FALSE(endpoint.empty()) << read_file(dir / "launch.log");
+  std::this_thread::sleep_for(1s);  // the view agent comes up after the bus
+  const auto seen = dir / "seen.log";
+  ScopedProcess with_key(test_support::spawn(
+      {"/usr/bin/env", "CHATSIM_CURVE_KEYS=" + (dir / "keys").string(), bin("chatsim"), "topic", "list", "--bus", endpoint,
+       "--duration-s", "1.5"},
+      seen.string()));
+  auto status = with_key.wait(10s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 0) << read_file(seen);
+  EXPECT_NE(read_file(seen).find("view"), std::string::npos) << read_file(seen) << read_file(dir / "launch.log");
+  ScopedProcess without(test_support::spawn(
+      {"/usr/bin/env", "-u", "CHATSIM_CURVE_KEYS", bin("chatsim"), "topic", "list", "--bus", endpoint}, "/dev/null"));
+  status = without.wait(10s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 3);
+  kill(launcher.pid, SIGINT);
+  EXPECT_TRUE(launcher.wait(10s));
 }

@@ -24,7 +24,10 @@ class InProcessBus {
   std::shared_ptr<zmq::context_t> context() const { return context_; }
 
   bus::NodeOptions options(const std::string& name, int heartbeat_ms = 0) const {
-    bus::NodeOptions o{name, "test", endpoint()};
+    bus::NodeOptions o;
+    o.name = name;
+    o.kind = "test";
+    o.bus = endpoint();
     o.heartbeat_period = std::chrono::milliseconds(heartbeat_ms);
     o.handshake_timeout = std::chrono::seconds(5);
     return o;

@@ -261,7 +261,10 @@ TEST(Bus, NodesBeatWithTheirNameAndPid) {
 
 TEST(Bus, UnreachableProxyIsAClearError) {
   auto ctx = std::make_shared<zmq::context_t>(1);
-  bus::NodeOptions o{"lonely", "test", "tcp://127.0.0.1:1"};
+  bus::NodeOptions o;
+  o.name = "lonely";
+  o.kind = "test";
+  o.bus = "tcp://127.0.0.1:1";
   o.handshake_timeout = 300ms;
   bus::Node node(o, ctx);
   try {
