@@ -10,6 +10,7 @@
 #include "common/bus/topics.hpp"
 #include "common/util/clock.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/path_policy.hpp"
 #include "common/util/log.hpp"
 #include "common/util/signals.hpp"
 
@@ -41,7 +42,17 @@ flatbuffers::Offset<msgs::Error> error_of(flatbuffers::FlatBufferBuilder& fbb,
 
 // /agent/<kind>/request: AgentRequest in, AgentResponse out. A malformed args_json is the
 // caller's fault, said so.
-bus::Node::Reply answer_agent_request(agents::Agent& agent, const std::string& node,
+// Paths in a request must lie inside the allowed folders (when any are configured).
+std::optional<agents::AgentOutcome> refuse_paths(const PathPolicy& policy, const agents::AgentCall& call) {
+  if (auto why = policy.refuse("scene", call.scene))
+    return agents::AgentOutcome::failure(agents::ErrorKind::BadRequest, *why);
+  if (call.args.is_object() && call.args.contains("output_dir") && call.args["output_dir"].is_string())
+    if (auto why = policy.refuse("output", call.args["output_dir"].get<std::string>()))
+      return agents::AgentOutcome::failure(agents::ErrorKind::BadRequest, *why);
+  return std::nullopt;
+}
+
+bus::Node::Reply answer_agent_request(agents::Agent& agent, const PathPolicy& policy, const std::string& node,
                                       const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
   const auto* req = request.payload<msgs::AgentRequest>();
   if (req == nullptr) return wrong_payload(fbb, node, "an AgentRequest");
@@ -50,7 +61,8 @@ bus::Node::Reply answer_agent_request(agents::Agent& agent, const std::string& n
   agents::AgentOutcome out;
   try {
     if (!bus::view(req->args_json()).empty()) call.args = nlohmann::json::parse(bus::view(req->args_json()));
-    out = agent.handle(call);
+    if (auto refused = refuse_paths(policy, call)) out = *refused;
+    else out = agent.handle(call);
   } catch (const nlohmann::json::parse_error& e) {
     out = agents::AgentOutcome::failure(agents::ErrorKind::BadRequest,
                                         std::string("args_json is not valid JSON: ") + e.what());
@@ -62,7 +74,7 @@ bus::Node::Reply answer_agent_request(agents::Agent& agent, const std::string& n
 }
 
 // /chat/request (the manager only): ChatRequest in, ChatResponse out.
-bus::Node::Reply answer_chat_request(agents::Agent& agent, const std::string& node,
+bus::Node::Reply answer_chat_request(agents::Agent& agent, const PathPolicy& policy, const std::string& node,
                                      const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
   const auto* req = request.payload<msgs::ChatRequest>();
   if (req == nullptr) return wrong_payload(fbb, node, "a ChatRequest");
@@ -72,7 +84,8 @@ bus::Node::Reply answer_chat_request(agents::Agent& agent, const std::string& no
                                 {"conversation_id", conversation},
                                 {"render", req->render()},
                                 {"output_dir", bus::view(req->output_dir())}}};
-  const auto out = agent.handle(call);
+  const auto refused = refuse_paths(policy, call);
+  const auto out = refused ? *refused : agent.handle(call);
   const auto error = error_of(fbb, out, node);
   const std::string message = out.ok ? out.result.value("message", std::string()) : out.message;
   const std::string edit = out.ok && out.result.contains("edit_state") ? out.result["edit_state"].dump() : "";
@@ -90,6 +103,8 @@ void add_node_options(CLI::App& app, AgentProcessOptions& o) {
   app.add_option("--heartbeat-ms", o.heartbeat_ms, "heartbeat period in ms")->check(CLI::Range(10, 60000));
   app.add_option("--handshake-timeout-ms", o.handshake_timeout_ms,
                  "how long to wait for the bus proxy at start")->check(CLI::Range(100, 600000));
+  app.add_option("--allowed-root", o.allowed_roots,
+                 "a folder that scene and output paths in requests must lie in (repeatable; default: any)");
   app.add_option("--curve-keys", o.curve_keys,
                  "CURVE keys folder (bus.pub and <name>.pub/.secret): encrypted, authenticated bus");
 }
@@ -170,17 +185,18 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
     }
   }
   init_logging(no.name);
+  const PathPolicy policy(std::vector<std::filesystem::path>(options.allowed_roots.begin(), options.allowed_roots.end()));
   try {
     bus::Node node(no);
     auto agent = make(node);
     node.serve(bus::topics::agent_request(no.kind),
                [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
-                 return answer_agent_request(*agent, no.name, request, fbb);
+                 return answer_agent_request(*agent, policy, no.name, request, fbb);
                });
     if (no.kind == "manager") {
       node.serve(std::string(bus::topics::kChatRequest),
                  [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
-                   return answer_chat_request(*agent, no.name, request, fbb);
+                   return answer_chat_request(*agent, policy, no.name, request, fbb);
                  });
     }
     node.start();

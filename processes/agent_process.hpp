@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -23,9 +24,10 @@ struct AgentProcessOptions {
   int heartbeat_ms = 500;
   int handshake_timeout_ms = 10000;
   std::string curve_keys;  // folder with bus.pub and <name>.{pub,secret}: CURVE on the bus
+  std::vector<std::string> allowed_roots;  // scene/output paths in requests must lie inside
 };
 
-// --bus, --name, --heartbeat-ms, --handshake-timeout-ms, --curve-keys.
+// --bus, --name, --heartbeat-ms, --handshake-timeout-ms, --allowed-root, --curve-keys.
 void add_node_options(CLI::App& app, AgentProcessOptions& options);
 
 // Parses argv; returns -1 to go on, else the exit code to return (help: 0, bad usage: 2).

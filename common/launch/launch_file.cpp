@@ -10,7 +10,7 @@
 namespace chatsim::launch {
 namespace {
 
-const std::vector<std::string> kTopKeys = {"bus", "stop_timeout_s", "curve_keys", "processes"};
+const std::vector<std::string> kTopKeys = {"bus", "stop_timeout_s", "curve_keys", "allowed_roots", "processes"};
 const std::vector<std::string> kProcessKeys = {
     "name",          "kind",         "executable",          "args",          "env",
     "host",          "respawn",      "respawn_delay_s",     "respawn_max_delay_s",
@@ -148,6 +148,13 @@ class Reader {
       // Relative to the launch file, so a file and its keys folder travel together.
       const std::filesystem::path keys = str(root["curve_keys"], "curve_keys");
       f.curve_keys = keys.is_absolute() ? keys : path_.parent_path() / keys;
+    }
+    if (const auto roots = root["allowed_roots"]) {
+      if (!roots.IsSequence()) fail(roots, "allowed_roots must be a list of folders");
+      for (const auto& r : roots) {
+        const std::filesystem::path dir = str(r, "allowed_roots");
+        f.allowed_roots.push_back(dir.is_absolute() ? dir : path_.parent_path() / dir);
+      }
     }
     const auto procs = root["processes"];
     if (!procs || !procs.IsSequence() || procs.size() == 0) {

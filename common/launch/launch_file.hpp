@@ -40,6 +40,7 @@ struct LaunchFile {
   std::string bus;                  // bus endpoint; port 0 = OS-chosen
   double stop_timeout_s = 3.0;      // SIGTERM, then SIGKILL after this
   std::filesystem::path curve_keys; // CURVE keys folder: every process gets --curve-keys
+  std::vector<std::filesystem::path> allowed_roots;  // every process gets --allowed-root for each
   std::vector<ProcessSpec> processes;
 
   const ProcessSpec* find(const std::string& name) const;

@@ -101,6 +101,10 @@ std::vector<std::string> Launcher::command_line(const ProcessSpec& spec) const {
       argv.push_back("--endpoint-file");
       argv.push_back(bus_port_file_.string());
     }
+    for (const auto& root : file_.allowed_roots) {
+      argv.push_back("--allowed-root");
+      argv.push_back(root.string());
+    }
     if (!file_.curve_keys.empty()) {
       argv.push_back("--curve-keys");
       argv.push_back(file_.curve_keys.string());

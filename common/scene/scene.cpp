@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/scene/scene_json.hpp"
+#include "common/util/path_policy.hpp"
 
 namespace chatsim::scene {
 namespace fs = std::filesystem;
@@ -50,6 +51,7 @@ Frame read_frame(const FieldReader& f, const Scene& scene, const LoadOptions& op
         img.fail("unknown camera '" + name + "' (cameras: see scene.json 'cameras')");
       ImageRef ref;
       ref.path = img.at("path").str();
+      if (!stays_inside(ref.path)) img.at("path").fail("must be a path inside the scene folder (relative, no '..' out of it)");
       ref.timestamp_s = img.has("timestamp_s") ? img.at("timestamp_s").number() : frame.timestamp_s;
       if (img.has("exposure_s")) {
         ref.exposure_s = img.at("exposure_s").number();
@@ -63,6 +65,7 @@ Frame read_frame(const FieldReader& f, const Scene& scene, const LoadOptions& op
   }
   if (f.has("lidar")) {
     frame.lidar = f.at("lidar").str();
+    if (!stays_inside(frame.lidar)) f.at("lidar").fail("must be a path inside the scene folder (relative, no '..' out of it)");
     if (options.check_files && !fs::exists(scene.dir / frame.lidar))
       f.at("lidar").fail("LiDAR file " + (scene.dir / frame.lidar).string() + " does not exist");
   }

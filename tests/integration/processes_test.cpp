@@ -156,3 +156,28 @@ TEST(Processes, MalformedArgumentsAreABadRequestNotACrash) {
   ASSERT_TRUE(status);
   EXPECT_EQ(WEXITSTATUS(*status), 0);
 }
+
+// With --allowed-root, a request naming a scene outside it is refused, "..": tricks included.
+TEST(Processes, PathsOutsideTheAllowedRootsAreRefused) {
+  const auto root = test_support::temp_path("allowed-root");
+  std::filesystem::create_directories(root);
+  test_support::InProcessBus b;
+  ScopedProcess proc(test_support::spawn(
+      {bin("chatsim-manager"), "--bus", b.endpoint(), "--allowed-root", root.string()}, "/dev/null"));
+  bus::Node client(b.options("client"), b.context());
+  HeartbeatWatcher watcher(client);
+  client.start();
+  ASSERT_TRUE(watcher.wait_for("manager", 5s));
+  for (const std::string& scene : {std::string("/etc"), (root / ".." / "elsewhere").string()}) {
+    flatbuffers::FlatBufferBuilder fbb;
+    auto req = msgs::CreateChatRequestDirect(fbb, "c1", scene.c_str(), "remove all cars");
+    auto r = client.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(), 5s);
+    ASSERT_TRUE(r.ok()) << r.error_message;
+    const auto* resp = r.response->payload<msgs::ChatResponse>();
+    ASSERT_NE(resp, nullptr);
+    EXPECT_FALSE(resp->ok());
+    EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest);
+    EXPECT_NE(bus::view(resp->error()->message()).find("outside the allowed folders"), std::string_view::npos)
+        << bus::view(resp->error()->message());
+  }
+}

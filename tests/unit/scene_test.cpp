@@ -94,6 +94,15 @@ TEST(Scene, ErrorsNameFileFieldAndProblem) {
     const auto e = load_error(dir);
     EXPECT_NE(e.find("lanes.json: lanes[0].centerline[1]: expected 3 numbers"), std::string::npos) << e;
   }
+  {
+    const auto dir = saved_synthetic("scene-escaping-path");
+    edit_json(dir / "scene.json", [](nlohmann::json& j) {
+      j.erase("layout_only");
+      for (auto& f : j["frames"]) f["images"] = {{"front", {{"path", "../../../etc/passwd"}}}};
+    });
+    const auto e = load_error(dir);
+    EXPECT_NE(e.find("frames[0].images.front.path: must be a path inside the scene folder"), std::string::npos) << e;
+  }
   EXPECT_NE(load_error(temp_path("no-such-scene")).find("does not exist"), std::string::npos);
 }
 
