@@ -11,9 +11,11 @@
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/clock.hpp"
 #include "common/util/exit_codes.hpp"
 #include "common/util/log.hpp"
 #include "processes/cli/commands.hpp"
+#include "processes/agent_liveness.hpp"
 #include "processes/cli/process_graph.hpp"
 
 namespace chatsim::cli {
@@ -45,14 +47,25 @@ int run_plan(const PlanArgs& a) {
     o.bus = graph.endpoint();
     o.heartbeat_period = std::chrono::milliseconds(0);
     bus::Node node(o);
+    // The manager's heartbeats: if it dies mid-round we say so at once, not at the deadline.
+    processes::AgentLiveness liveness;
+    node.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
+      if (const auto* hb = m.payload<msgs::Heartbeat>())
+        liveness.observe(std::string(bus::view(hb->node())), std::string(bus::view(hb->kind())), hb->pid(),
+                         hb->period_ms() / 1000.0, hb->state() == msgs::NodeState::Stopping, mono_s());
+    });
     node.start();
+    for (const double until = mono_s() + 1.0; mono_s() < until && liveness.snapshot("manager", mono_s()).empty();)
+      node.spin_once(std::chrono::milliseconds(20));
     const std::string conversation = a.conversation.empty() ? o.name : a.conversation;
     std::string edit;
     for (size_t i = 0; i < a.rounds.size(); ++i) {
       flatbuffers::FlatBufferBuilder fbb(1024);
       const auto req = msgs::CreateChatRequestDirect(fbb, conversation.c_str(), scene_dir.c_str(), a.rounds[i].c_str(), false, "");
+      const auto sent_to = liveness.snapshot("manager", mono_s());
       const auto result = node.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(),
-                                    std::chrono::milliseconds(int64_t(a.timeout_s * 1000)));
+                                    std::chrono::milliseconds(int64_t(a.timeout_s * 1000)),
+                                    [&] { return liveness.lost("manager", sent_to, mono_s()); });
       if (!result.ok()) {
         spdlog::error("round {}: no answer from the manager: {}", i + 1, result.error_message);
         return exit_code::kBusUnavailable;

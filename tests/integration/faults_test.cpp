@@ -89,3 +89,33 @@ TEST(Faults, AnAgentKilledMidRequestIsReportedWithinFiveSeconds) {
     EXPECT_TRUE(again.response->payload<msgs::ChatResponse>()->ok());
   }
 }
+
+// The manager itself killed mid-round: chatsim plan says so within 5 s (exit code 3).
+TEST(Faults, AManagerKilledMidRoundIsReportedByPlan) {
+  const auto scene = test_support::temp_path("faults-scene-2").string();
+  scene::save_scene(scene::demo_layout({}), scene);
+  test_support::InProcessBus b;
+  bus::Node client(b.options("client"), b.context());
+  HeartbeatWatcher watcher(client);
+  client.start();
+  std::vector<std::unique_ptr<ScopedProcess>> agents;
+  for (const std::string kind : {"manager", "view", "deletion", "asset"}) {
+    agents.push_back(std::make_unique<ScopedProcess>(test_support::spawn({bin("chatsim-" + kind), "--bus", b.endpoint()}, "/dev/null")));
+    ASSERT_TRUE(watcher.wait_for(kind, 5s)) << kind;
+  }
+  const auto script = test_support::temp_path("slow-motion-2.yaml");
+  std::ofstream(script) << "agent: motion\nresponses:\n  - delay_ms: 20000\n    result: {}\n";
+  ScopedProcess slow(test_support::spawn({bin("chatsim-mock"), "--script", script.string(), "--bus", b.endpoint()}, "/dev/null"));
+  ASSERT_TRUE(watcher.wait_for("motion", 5s));
+  const auto log = test_support::temp_path("plan-manager-dies.log");
+  ScopedProcess plan(test_support::spawn(
+      {bin("chatsim"), "plan", "--bus", b.endpoint(), "--scene", scene, "Add a red car 20 m ahead."}, log.string()));
+  std::this_thread::sleep_for(2s);
+  const double killed_at = mono_s();
+  kill(agents.front()->pid, SIGKILL);  // the manager
+  const auto status = plan.wait(10s);
+  ASSERT_TRUE(status) << "plan did not notice";
+  EXPECT_LT(mono_s() - killed_at, 5.0);
+  EXPECT_EQ(WEXITSTATUS(*status), 3);
+  EXPECT_NE(test_support::read_file(log).find("the manager agent failed"), std::string::npos) << test_support::read_file(log);
+}
