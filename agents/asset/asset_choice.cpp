@@ -102,6 +102,8 @@ AssetRequest parse_asset(const std::string& instruction) {
     r.color_rgb = colors.front().rgb;
   }
   if (!types.empty()) {
+    // "some cones", "cars": more than one, how many unsaid.
+    if (types.front().plural && !text::has_any(w, {"all", "every", "each"})) r.count = 3;
     const size_t at = types.front().begin;
     // "two traffic cones", "500 cars", "a couple of vans": the count word right before the noun phrase.
     for (size_t i = at; i-- > 0 && at - i <= 4;) {

@@ -109,8 +109,8 @@ bool mentions_vehicle(const Words& w) {
 }
 
 bool refers_to_added(const Words& w) {
-  return has_any(w, {"it", "them", "both", "they", "added", "new", "you added", "i added", "we added", "inserted",
-                     "that car", "this car", "the one"});
+  return has_any(w, {"it", "its", "them", "their", "both", "they", "added", "new", "you added", "i added", "we added",
+                     "inserted", "that car", "this car", "the one"});
 }
 
 // "add a porsche ahead and a mini on my left" -> two add texts.
@@ -167,7 +167,8 @@ Instruction classify(const Words& c) {
     return std::find(verbs.begin(), verbs.end(), first) != verbs.end();
   };
   if (has_any(c, {"put back", "bring back", "restore", "undo the deletion", "undo the removal", "undelete",
-                  "add back", "re-add", "readd", "put it back", "put them back", "undo"})) {
+                  "add back", "re-add", "readd", "put it back", "put them back", "undo", "add it back",
+                  "add them back", "bring it back", "bring them back"})) {
     in.kind = "restore";
     in.target = in.text;
     return in;
@@ -267,8 +268,7 @@ std::string reference_in(const std::string& clause) {
       return text::join(w, i, end);
     }
   }
-  if (text::has_any(w, {"it"})) return "it";
-  return "it";
+  return "it";  // "it", "its", or nothing said: the vehicle spoken about last
 }
 
 std::vector<Instruction> decompose(const std::string& command) {

@@ -16,7 +16,7 @@ std::string strip_reference(const std::string& text, const std::string& referenc
   std::vector<std::string> w = text::words(text);
   std::vector<std::string> drop;
   if (reference == "both" || reference == "them") drop = {"both of them", "all of them", "each of them", "both", "them", "they"};
-  else drop = {reference, "it"};
+  else drop = {reference, "it", "its"};
   for (const auto& d : drop) {
     const size_t n = text::words(d).size();
     for (size_t at = text::find_phrase(w, d); at != std::string::npos; at = text::find_phrase(w, d))
