@@ -123,6 +123,14 @@ int parse_or_exit(CLI::App& app, int argc, char** argv) {
   return -1;
 }
 
+void watch_heartbeats(bus::Node& node, AgentLiveness& liveness) {
+  node.subscribe(std::string(bus::topics::kHeartbeat), [&liveness](const bus::Message& m) {
+    if (const auto* hb = m.payload<msgs::Heartbeat>())
+      liveness.observe(std::string(bus::view(hb->node())), std::string(bus::view(hb->kind())), hb->pid(),
+                       hb->period_ms() / 1000.0, hb->state() == msgs::NodeState::Stopping, mono_s());
+  });
+}
+
 agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout,
                                         const AgentLiveness* liveness) {
   return [&node, timeout, liveness](const std::string& kind, const agents::AgentCall& call) {
@@ -175,16 +183,15 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
   no.bus = options.bus.empty() ? bus::default_bus_endpoint() : options.bus;
   no.heartbeat_period = std::chrono::milliseconds(options.heartbeat_ms);
   no.handshake_timeout = std::chrono::milliseconds(options.handshake_timeout_ms);
+  init_logging(no.name);
   if (!options.curve_keys.empty()) {
     try {
       no.curve = bus::curve_client_from_dir(options.curve_keys, no.name);
     } catch (const std::exception& e) {
-      init_logging(no.name);
       spdlog::error("{}", e.what());
       return exit_code::kUsage;
     }
   }
-  init_logging(no.name);
   const PathPolicy policy(std::vector<std::filesystem::path>(options.allowed_roots.begin(), options.allowed_roots.end()));
   try {
     bus::Node node(no);
@@ -225,11 +232,7 @@ int agent_main(int argc, char** argv, const std::string& kind) {
     if (kind != "manager") return agents::make_agent(kind);
     // The manager reaches the other agents over the bus; an answer may take a while, but a
     // dead agent is noticed from its heartbeats within seconds.
-    node.subscribe(std::string(bus::topics::kHeartbeat), [liveness](const bus::Message& m) {
-      if (const auto* hb = m.payload<msgs::Heartbeat>())
-        liveness->observe(std::string(bus::view(hb->node())), std::string(bus::view(hb->kind())), hb->pid(),
-                          hb->period_ms() / 1000.0, hb->state() == msgs::NodeState::Stopping, mono_s());
-    });
+    watch_heartbeats(node, *liveness);
     return agents::make_agent(kind, bus_caller(node, std::chrono::seconds(60), liveness.get()));
   });
 }

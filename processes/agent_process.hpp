@@ -42,6 +42,9 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
 
 class AgentLiveness;
 
+// Feeds every heartbeat on the node's bus into liveness (subscribe before node.start()).
+void watch_heartbeats(bus::Node& node, AgentLiveness& liveness);
+
 // Calls another agent over the bus: AgentRequest out, AgentResponse back, within timeout.
 // With liveness, a call ends as soon as the agents it went to are dead or restarted.
 agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout,

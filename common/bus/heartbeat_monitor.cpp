@@ -22,6 +22,16 @@ bool HeartbeatMonitor::alive(const std::string& node, double now_s) const {
   return now_s - it->second.last_s <= timeout(it->second);
 }
 
+bool HeartbeatMonitor::stopped(const std::string& node) const {
+  const auto it = nodes_.find(node);
+  return it != nodes_.end() && it->second.stopped;
+}
+
+double HeartbeatMonitor::last_seen_s(const std::string& node) const {
+  const auto it = nodes_.find(node);
+  return it == nodes_.end() ? -1.0 : it->second.last_s;
+}
+
 std::vector<std::string> HeartbeatMonitor::overdue(double now_s) const {
   std::vector<std::string> out;
   for (const auto& [name, e] : nodes_) {

@@ -18,6 +18,9 @@ class HeartbeatMonitor {
 
   bool seen(const std::string& node) const { return nodes_.count(node) != 0; }
   bool alive(const std::string& node, double now_s) const;
+  // Whether its last heartbeat said it was stopping, and when that beat came (-1: never seen).
+  bool stopped(const std::string& node) const;
+  double last_seen_s(const std::string& node) const;
   // Nodes that beat once and then fell silent without saying they were stopping.
   std::vector<std::string> overdue(double now_s) const;
   std::vector<std::string> names() const;

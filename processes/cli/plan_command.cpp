@@ -16,6 +16,7 @@
 #include "common/util/log.hpp"
 #include "processes/cli/commands.hpp"
 #include "processes/agent_liveness.hpp"
+#include "processes/agent_process.hpp"
 #include "processes/cli/process_graph.hpp"
 
 namespace chatsim::cli {
@@ -49,11 +50,7 @@ int run_plan(const PlanArgs& a) {
     bus::Node node(o);
     // The manager's heartbeats: if it dies mid-round we say so at once, not at the deadline.
     processes::AgentLiveness liveness;
-    node.subscribe(std::string(bus::topics::kHeartbeat), [&](const bus::Message& m) {
-      if (const auto* hb = m.payload<msgs::Heartbeat>())
-        liveness.observe(std::string(bus::view(hb->node())), std::string(bus::view(hb->kind())), hb->pid(),
-                         hb->period_ms() / 1000.0, hb->state() == msgs::NodeState::Stopping, mono_s());
-    });
+    processes::watch_heartbeats(node, liveness);
     node.start();
     for (const double until = mono_s() + 1.0; mono_s() < until && liveness.snapshot("manager", mono_s()).empty();)
       node.spin_once(std::chrono::milliseconds(20));
