@@ -186,6 +186,27 @@ json Manager::others_json(const Conversation& c, int except) const {
   return others;
 }
 
+bool Manager::plan_motion(Conversation& c, AddedVehicle& v, const json& args, const std::string& text) {
+  const auto plan = call("motion", c, "plan", args);
+  if (!plan.ok) {
+    // A plan that cannot be made is an answer; an agent that failed is not.
+    if (plan.error != ErrorKind::BadRequest) throw std::runtime_error("motion agent: " + plan.message);
+    c.unresolved.push_back({{"instruction", text}, {"reason", v.id + ": " + plan.message}});
+    return false;
+  }
+  v.intent = plan.result["intent"];
+  // Later rounds must find the same anchor, whatever "it" means by then.
+  if (args.contains("anchor") && v.intent.contains("relative")) v.intent["relative"]["to"] = args["anchor"]["id"];
+  v.resolved = plan.result["resolved"];
+  v.trajectory = plan.result["trajectory"];
+  v.speed_mps = plan.result["speed_mps"];
+  v.lane = plan.result["lane"];
+  for (const auto& n : plan.result["notes"]) c.notes.push_back(v.id + ": " + n.get<std::string>());
+  for (const auto& n : plan.result.value("not_done", json::array()))
+    c.unresolved.push_back({{"instruction", text}, {"reason", v.id + ": " + n.get<std::string>()}});
+  return true;
+}
+
 bool Manager::add_one(Conversation& c, const json& asset_args, const json& motion_said, const std::string& text,
                       Round& round, bool strict) {
   const auto asset = call("asset", c, "choose", asset_args);
@@ -203,25 +224,11 @@ bool Manager::add_one(Conversation& c, const json& asset_args, const json& motio
     }
     args["anchor"] = anchor_json(c.added[size_t(ref.front())]);
   }
-  const auto plan = call("motion", c, "plan", args);
-  if (!plan.ok) {
-    if (plan.error != ErrorKind::BadRequest) throw std::runtime_error("motion agent: " + plan.message);
-    c.unresolved.push_back({{"instruction", text}, {"reason", plan.message}});
-    return false;
-  }
   AddedVehicle v;
-  v.id = "added_" + std::to_string(c.next_id++);
+  v.id = "added_" + std::to_string(c.next_id);
   v.asset = choice;
-  v.intent = plan.result["intent"];
-  // Later rounds must find the same anchor, whatever "it" means by then.
-  if (args.contains("anchor") && v.intent.contains("relative")) v.intent["relative"]["to"] = args["anchor"]["id"];
-  v.resolved = plan.result["resolved"];
-  v.trajectory = plan.result["trajectory"];
-  v.speed_mps = plan.result["speed_mps"];
-  v.lane = plan.result["lane"];
-  for (const auto& n : plan.result["notes"]) c.notes.push_back(v.id + ": " + n.get<std::string>());
-  for (const auto& n : plan.result.value("not_done", json::array()))
-    c.unresolved.push_back({{"instruction", text}, {"reason", v.id + " was added, but " + n.get<std::string>()}});
+  if (!plan_motion(c, v, args, text)) return false;
+  ++c.next_id;
   if (choice.contains("note")) c.notes.push_back(v.id + ": " + choice["note"].get<std::string>());
   c.added.push_back(v);
   c.last_ref = int(c.added.size()) - 1;
@@ -304,21 +311,7 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
         args["intent"].erase("relative");
       }
     }
-    const auto plan = call("motion", c, "plan", args);
-    if (!plan.ok) {
-      if (plan.error != ErrorKind::BadRequest) throw std::runtime_error("motion agent: " + plan.message);
-      c.unresolved.push_back({{"instruction", in.text}, {"reason", v.id + ": " + plan.message}});
-      continue;
-    }
-    v.intent = plan.result["intent"];
-    v.resolved = plan.result["resolved"];
-    v.trajectory = plan.result["trajectory"];
-    v.speed_mps = plan.result["speed_mps"];
-    v.lane = plan.result["lane"];
-    for (const auto& n : plan.result["notes"]) c.notes.push_back(v.id + ": " + n.get<std::string>());
-    for (const auto& n : plan.result.value("not_done", json::array()))
-      c.unresolved.push_back({{"instruction", in.text}, {"reason", v.id + ": " + n.get<std::string>()}});
-    round.done.push_back("Revised " + v.id + ".");
+    if (plan_motion(c, v, args, in.text)) round.done.push_back("Revised " + v.id + ".");
   }
   if (!changed_any)
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "found nothing to change (colour, type, placement, speed or action)"}});

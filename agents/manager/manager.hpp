@@ -71,6 +71,9 @@ class Manager {
   void do_revise(Conversation& c, const Instruction& in, Round& round);
   void do_remove_added(Conversation& c, const Instruction& in, Round& round);
   void do_abstract(Conversation& c, const Instruction& in, Round& round);
+  // Asks the motion agent for v's trajectory and stores it; false (and unresolved) when it
+  // cannot be planned, an exception when the agent failed.
+  bool plan_motion(Conversation& c, AddedVehicle& v, const nlohmann::json& args, const std::string& text);
   bool add_one(Conversation& c, const nlohmann::json& asset_args, const nlohmann::json& motion_args,
                const std::string& text, Round& round, bool strict = false);
   std::vector<int> resolve(const Conversation& c, const std::string& reference) const;

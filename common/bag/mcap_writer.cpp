@@ -29,6 +29,26 @@ std::string record(uint8_t opcode, const std::string& body) {
 
 }  // namespace
 
+// The same records go in the data section and again in the summary.
+std::string McapWriter::schema_body(const Schema& s) {
+  std::string b;
+  put<uint16_t>(b, s.id);
+  put_string(b, s.name);
+  put_string(b, s.encoding);
+  put_string(b, s.data);
+  return b;
+}
+
+std::string McapWriter::channel_body(const Channel& c) {
+  std::string b;
+  put<uint16_t>(b, c.id);
+  put<uint16_t>(b, c.schema_id);
+  put_string(b, c.topic);
+  put_string(b, c.encoding);
+  put_map(b, c.metadata);
+  return b;
+}
+
 McapWriter::McapWriter(const std::filesystem::path& file, Options options)
     : out_(file, std::ios::binary | std::ios::trunc), options_(std::move(options)) {
   if (!out_) throw McapError(file.string() + ": cannot open for writing");
@@ -59,12 +79,7 @@ void McapWriter::write_record(uint8_t opcode, const std::string& body, bool to_d
 uint16_t McapWriter::add_schema(const std::string& name, const std::string& encoding, std::string_view data) {
   const uint16_t id = uint16_t(schemas_.size() + 1);
   schemas_.push_back({id, name, encoding, std::string(data)});
-  std::string b;
-  put<uint16_t>(b, id);
-  put_string(b, name);
-  put_string(b, encoding);
-  put_string(b, data);
-  write_record(kSchema, b);
+  write_record(kSchema, schema_body(schemas_.back()));
   return id;
 }
 
@@ -72,13 +87,7 @@ uint16_t McapWriter::add_channel(uint16_t schema_id, const std::string& topic, c
                                  const std::map<std::string, std::string>& metadata) {
   const uint16_t id = uint16_t(channels_.size() + 1);
   channels_.push_back({id, schema_id, topic, encoding, metadata});
-  std::string b;
-  put<uint16_t>(b, id);
-  put<uint16_t>(b, schema_id);
-  put_string(b, topic);
-  put_string(b, encoding);
-  put_map(b, metadata);
-  write_record(kChannel, b);
+  write_record(kChannel, channel_body(channels_.back()));
   return id;
 }
 
@@ -175,25 +184,10 @@ void McapWriter::close() {
     if (offset_ > start) groups.emplace_back(op, start, offset_ - start);
   };
   group(kSchema, [&] {
-    for (const auto& s : schemas_) {
-      std::string b;
-      put<uint16_t>(b, s.id);
-      put_string(b, s.name);
-      put_string(b, s.encoding);
-      put_string(b, s.data);
-      summary_record(kSchema, b);
-    }
+    for (const auto& s : schemas_) summary_record(kSchema, schema_body(s));
   });
   group(kChannel, [&] {
-    for (const auto& c : channels_) {
-      std::string b;
-      put<uint16_t>(b, c.id);
-      put<uint16_t>(b, c.schema_id);
-      put_string(b, c.topic);
-      put_string(b, c.encoding);
-      put_map(b, c.metadata);
-      summary_record(kChannel, b);
-    }
+    for (const auto& c : channels_) summary_record(kChannel, channel_body(c));
   });
   group(kStatistics, [&] {
     std::string b;

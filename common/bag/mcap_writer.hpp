@@ -54,6 +54,8 @@ class McapWriter {
     uint64_t start, end, offset, length, index_length, compressed, uncompressed;
     std::map<uint16_t, uint64_t> index_offsets;
   };
+  static std::string schema_body(const Schema& s);
+  static std::string channel_body(const Channel& c);
   void write_record(uint8_t opcode, const std::string& body, bool to_data_crc = true);
   void flush_chunk();
 
