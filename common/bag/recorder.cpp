@@ -28,8 +28,6 @@ constexpr const char* kImageSchema = R"({"title":"foxglove.CompressedImage","typ
 "timestamp":{"type":"object","properties":{"sec":{"type":"integer"},"nsec":{"type":"integer"}}},
 "frame_id":{"type":"string"},"data":{"type":"string","contentEncoding":"base64"},"format":{"type":"string"}}})";
 
-bool internal(std::string_view topic) { return topic.rfind(bus::topics::kProbePrefix, 0) == 0; }
-
 struct Item {
   std::string topic;
   std::string bytes;
@@ -123,7 +121,7 @@ RecordReport record(const RecordOptions& o, const std::atomic<bool>& stop,
     node = std::make_unique<bus::Node>(no);
     auto handler = [&](const bus::Message& m) {
       if (!o.all && o.topics.empty()) return;
-      if (o.all && internal(m.topic())) return;
+      if (o.all && bus::topics::is_probe(m.topic())) return;
       Item item{std::string(m.topic()), std::string(reinterpret_cast<const char*>(m.data()), m.size()), uint64_t(now_ns())};
       std::lock_guard lock(mu);
       if (queued_bytes + item.bytes.size() > o.max_queue_bytes) {

@@ -1,5 +1,7 @@
 #include "common/bus/message_json.hpp"
 
+#include "common/util/executable_dir.hpp"
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -12,12 +14,6 @@ namespace chatsim::bus {
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path self_dir() {
-  std::error_code ec;
-  const auto exe = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::current_path() : exe.parent_path();
-}
 
 void shorten(nlohmann::json& j, size_t max_array) {
   if (j.is_array()) {
@@ -35,7 +31,7 @@ void shorten(nlohmann::json& j, size_t max_array) {
 
 fs::path envelope_bfbs_path() {
   if (const char* env = std::getenv("CHATSIM_MSGS_BFBS"); env != nullptr && *env != '\0') return env;
-  const fs::path beside = self_dir() / ".." / "share" / "chatsim" / "msgs" / "envelope.bfbs";
+  const fs::path beside = executable_dir() / ".." / "share" / "chatsim" / "msgs" / "envelope.bfbs";
   if (fs::exists(beside)) return beside;
   return CHATSIM_MSGS_BFBS;
 }

@@ -28,6 +28,9 @@ inline std::string reply(std::string_view node, uint64_t instance) {
   return "/reply/" + std::string(node) + "/" + hex(instance);
 }
 
+// Handshake probes: bus plumbing, not traffic worth showing or recording.
+inline bool is_probe(std::string_view topic) { return topic.substr(0, kProbePrefix.size()) == kProbePrefix; }
+
 inline std::string probe(std::string_view node, uint64_t instance, uint64_t n) {
   return std::string(kProbePrefix) + std::string(node) + "/" + hex(instance) + "/" + std::to_string(n);
 }

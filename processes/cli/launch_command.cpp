@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "common/launch/launcher.hpp"
+#include "common/util/executable_dir.hpp"
 #include "common/util/exit_codes.hpp"
 #include "common/util/log.hpp"
 #include "common/util/signals.hpp"
@@ -20,12 +21,6 @@ struct LaunchArgs {
   std::vector<std::string> mocks;
   bool check = false;
 };
-
-std::filesystem::path self_dir() {
-  std::error_code ec;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::filesystem::current_path() : exe.parent_path();
-}
 
 int run_launch(const LaunchArgs& a) {
   init_logging("launch");
@@ -45,7 +40,7 @@ int run_launch(const LaunchArgs& a) {
                   file.bus.c_str());
       return exit_code::kOk;
     }
-    launch::Launcher launcher(std::move(file), {a.bus, a.endpoint_file, self_dir()});
+    launch::Launcher launcher(std::move(file), {a.bus, a.endpoint_file, executable_dir()});
     return launcher.run(stop);
   } catch (const launch::LaunchFileError& e) {
     spdlog::error("{}", e.what());

@@ -11,15 +11,10 @@
 #include "common/bus/endpoint.hpp"
 #include "common/bus/node.hpp"
 #include "common/launch/launcher.hpp"
+#include "common/util/executable_dir.hpp"
 
 namespace chatsim::cli {
 namespace fs = std::filesystem;
-
-fs::path self_dir() {
-  std::error_code ec;
-  const auto exe = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::current_path() : exe.parent_path();
-}
 
 namespace {
 
@@ -72,7 +67,7 @@ ProcessGraph::ProcessGraph(const std::string& bus, const std::vector<std::string
   }
   endpoint_file_ = fs::temp_directory_path() / ("chatsim-bus-" + std::to_string(getpid()) + ".endpoint");
   fs::remove(endpoint_file_);
-  launcher_ = std::make_unique<launch::Launcher>(std::move(file), launch::LauncherOptions{"", endpoint_file_, self_dir()});
+  launcher_ = std::make_unique<launch::Launcher>(std::move(file), launch::LauncherOptions{"", endpoint_file_, executable_dir()});
   spdlog::info("no bus running: starting chatsim-bus and {} agent processes", agents.size());
   thread_ = std::thread([this] { exit_code_ = launcher_->run(stop_); });
   // Ready when the endpoint file exists and every process has beaten (the launcher starts them

@@ -33,6 +33,4 @@ class ProcessGraph {
   std::filesystem::path endpoint_file_;
 };
 
-std::filesystem::path self_dir();
-
 }  // namespace chatsim::cli

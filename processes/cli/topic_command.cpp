@@ -39,7 +39,7 @@ bus::NodeOptions node_options(const TopicArgs& a) {
 }
 
 bool internal(std::string_view topic) {
-  return topic.rfind(bus::topics::kProbePrefix, 0) == 0 || topic.rfind("/reply/", 0) == 0;
+  return bus::topics::is_probe(topic) || topic.rfind("/reply/", 0) == 0;
 }
 
 int run_list(const TopicArgs& a) {
