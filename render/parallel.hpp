@@ -1,0 +1,40 @@
+#pragma once
+// A parallel loop over [0, n) on all cores: items are taken one at a time from a shared counter,
+// so uneven rows balance themselves. The first exception thrown by any item is rethrown.
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace chatsim::render {
+
+inline int default_threads() { return std::max(1, int(std::thread::hardware_concurrency())); }
+
+inline void parallel_for(int n, const std::function<void(int)>& body, int threads = 0) {
+  if (threads <= 0) threads = default_threads();
+  threads = std::min(threads, std::max(1, n));
+  std::atomic<int> next{0};
+  std::exception_ptr error;
+  std::mutex error_mu;
+  auto worker = [&] {
+    for (int i = next++; i < n; i = next++) {
+      try {
+        body(i);
+      } catch (...) {
+        std::lock_guard lock(error_mu);
+        if (!error) error = std::current_exception();
+        next = n;  // stop handing out work
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace chatsim::render

@@ -1,0 +1,269 @@
+#include "render/path_tracer.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+#include "render/parallel.hpp"
+#include "render/sampling.hpp"
+
+namespace chatsim::render {
+
+Lighting Lighting::from_sky(const Sky& sky, const EnvMap& map) {
+  Lighting l;
+  l.sky = &map;
+  if (sky.has_sun()) {
+    l.sun_direction = sky.sun_direction();
+    l.sun_radiance = sky.sun_radiance();
+    l.sun_cos_max = sun_cos_half_angle();
+  }
+  return l;
+}
+
+Ray camera_ray(const scene::Camera& cam, const Eigen::Isometry3d& c2w, float u, float v) {
+  const Eigen::Vector3d d_cam((u - cam.cx) / cam.fx, (v - cam.cy) / cam.fy, 1.0);
+  Ray r;
+  r.origin = c2w.translation().cast<float>();
+  r.direction = (c2w.linear() * d_cam).normalized().cast<float>();
+  r.t_min = 1e-3f;
+  return r;
+}
+
+namespace {
+
+struct SampleResult {
+  Rgb radiance = Rgb::Zero();
+  bool covered = false;       // met geometry other than the catcher
+  bool on_catcher = false;
+  float catcher_lit = 0, catcher_unoccluded = 0;
+};
+
+// Moves a ray's origin off the surface along the side it leaves from.
+Eigen::Vector3f offset(const Eigen::Vector3f& p, const Eigen::Vector3f& n_facing) {
+  return p + n_facing * (1e-4f * std::max(1.0f, p.cwiseAbs().maxCoeff()));
+}
+
+class Tracer {
+ public:
+  Tracer(const RayScene& scene, const Lighting& lighting, const RenderSettings& s)
+      : scene_(scene), light_(lighting), s_(s) {}
+
+  SampleResult trace(Ray ray, Rng& rng) const {
+    SampleResult out;
+    Rgb beta = Rgb::Ones();
+    float prev_pdf = 0;
+    bool prev_specular = true;  // the camera ray counts as "seen directly"
+    for (int depth = 0;; ++depth) {
+      const auto hit = scene_.intersect(ray);
+      if (!hit) {
+        if (depth == 0 && !s_.include_sky) break;
+        if (light_.sky != nullptr) {
+          const float w = prev_specular ? 1.0f : mis_weight(prev_pdf, light_.sky->pdf(ray.direction));
+          add(out, beta.cwiseProduct(light_.sky->radiance(ray.direction)) * w, depth);
+        }
+        if (light_.has_sun() && ray.direction.dot(light_.sun_direction) >= light_.sun_cos_max) {
+          const float w = prev_specular ? 1.0f : mis_weight(prev_pdf, light_.sun_pdf());
+          add(out, beta.cwiseProduct(light_.sun_radiance) * w, depth);
+        }
+        break;
+      }
+      const Material& mat = scene_.material(hit->material);
+      if (depth == 0) {
+        if (mat.kind == MaterialKind::ShadowCatcher) {
+          out.on_catcher = true;
+          shade_catcher(*hit, ray, rng, out);
+          break;
+        }
+        out.covered = true;
+      }
+      if (mat.kind == MaterialKind::Emissive) {
+        add(out, beta.cwiseProduct(mat.emission), depth);
+        break;
+      }
+      // Two-sided surfaces: both normals face the side the ray came from.
+      Eigen::Vector3f ng = hit->geometric_normal;
+      if (ng.dot(ray.direction) > 0) ng = -ng;
+      Eigen::Vector3f ns = hit->shading_normal;
+      if (ns.dot(ng) < 0) ns = -ns;
+      const Frame frame(ns);
+      const Eigen::Vector3f wo = frame.to_local(-ray.direction);
+      if (wo.z() <= 0) break;
+      SurfacePoint sp{mat.albedo, mat.roughness, mat.specular};
+      if (mat.texture) sp = mat.texture->shade(sp, hit->position, hit->uv, ns);
+      const Bsdf bsdf(mat, sp);
+      const Eigen::Vector3f origin = offset(hit->position, ng);
+      // The sun.
+      if (light_.has_sun()) {
+        const Frame sun_frame(light_.sun_direction);
+        const Eigen::Vector3f wi_w = sun_frame.to_world(sample_cone(rng.uniform(), rng.uniform(), light_.sun_cos_max));
+        if (wi_w.dot(ng) > 0) {
+          const Eigen::Vector3f wi = frame.to_local(wi_w);
+          const Rgb f = bsdf.eval(wo, wi);
+          if (f.maxCoeff() > 0 && !blocked(origin, wi_w, ray.time)) {
+            const float pdf = light_.sun_pdf();
+            add(out, beta.cwiseProduct(f).cwiseProduct(light_.sun_radiance) * (mis_weight(pdf, bsdf.pdf(wo, wi)) / pdf), depth);
+          }
+        }
+      }
+      // The sky.
+      if (light_.sky != nullptr) {
+        float pdf = 0;
+        const Eigen::Vector3f wi_w = light_.sky->sample(rng.uniform(), rng.uniform(), &pdf);
+        if (pdf > 0 && wi_w.dot(ng) > 0) {
+          const Eigen::Vector3f wi = frame.to_local(wi_w);
+          const Rgb f = bsdf.eval(wo, wi);
+          if (f.maxCoeff() > 0 && !blocked(origin, wi_w, ray.time))
+            add(out, beta.cwiseProduct(f).cwiseProduct(light_.sky->radiance(wi_w)) * (mis_weight(pdf, bsdf.pdf(wo, wi)) / pdf), depth);
+        }
+      }
+      if (depth + 1 > s_.max_depth) break;
+      Bsdf::Sample bs;
+      if (!bsdf.sample(wo, rng.uniform(), rng.uniform(), rng.uniform(), bs)) break;
+      const Eigen::Vector3f wi_w = frame.to_world(bs.wi);
+      if (wi_w.dot(ng) <= 0) break;
+      beta = beta.cwiseProduct(bs.weight);
+      prev_pdf = bs.pdf;
+      prev_specular = false;
+      if (depth >= 2) {  // Russian roulette
+        const float q = std::max(0.05f, 1 - beta.maxCoeff());
+        if (rng.uniform() < q) break;
+        beta /= (1 - q);
+      }
+      ray.origin = origin;
+      ray.direction = wi_w;
+      ray.t_min = 0;
+      ray.t_max = 1e30f;
+      ray.mask = mask::kAll;
+    }
+    return out;
+  }
+
+ private:
+  void add(SampleResult& out, const Rgb& c, int depth) const {
+    if (!c.allFinite()) return;
+    if (depth > 0 && s_.clamp_indirect > 0 && c.maxCoeff() > s_.clamp_indirect) {
+      out.radiance += c * (s_.clamp_indirect / c.maxCoeff());
+      return;
+    }
+    out.radiance += c;
+  }
+
+  bool blocked(const Eigen::Vector3f& origin, const Eigen::Vector3f& dir, float time, uint32_t mask = mask::kAll) const {
+    Ray r;
+    r.origin = origin;
+    r.direction = dir;
+    r.t_min = 0;
+    r.time = time;
+    r.mask = mask & ~mask::kCatcher;  // the catcher is a receiver, never a blocker
+    return scene_.occluded(r);
+  }
+
+  // The ratio of light reaching the catcher with and without the objects above it, from the
+  // same light samples (a diffuse ground: irradiance ratio).
+  void shade_catcher(const Hit& hit, const Ray& ray, Rng& rng, SampleResult& out) const {
+    Eigen::Vector3f n = hit.geometric_normal;
+    if (n.dot(ray.direction) > 0) n = -n;
+    const Eigen::Vector3f origin = offset(hit.position, n);
+    for (int k = 0; k < std::max(1, s_.catcher_light_samples); ++k) {
+      if (light_.has_sun()) {
+        const Frame sf(light_.sun_direction);
+        const Eigen::Vector3f wi = sf.to_world(sample_cone(rng.uniform(), rng.uniform(), light_.sun_cos_max));
+        const float c = wi.dot(n);
+        if (c > 0) {
+          const float e = luminance(light_.sun_radiance) * c / light_.sun_pdf();
+          out.catcher_unoccluded += e;
+          if (!blocked(origin, wi, ray.time)) out.catcher_lit += e;
+        }
+      }
+      if (light_.sky != nullptr) {
+        float pdf = 0;
+        const Eigen::Vector3f wi = light_.sky->sample(rng.uniform(), rng.uniform(), &pdf);
+        const float c = wi.dot(n);
+        if (pdf > 0 && c > 0) {
+          const float e = luminance(light_.sky->radiance(wi)) * c / pdf;
+          out.catcher_unoccluded += e;
+          if (!blocked(origin, wi, ray.time)) out.catcher_lit += e;
+        }
+      }
+    }
+  }
+
+  const RayScene& scene_;
+  const Lighting& light_;
+  const RenderSettings& s_;
+};
+
+}  // namespace
+
+RenderedView render_view(const RayScene& scene, const Lighting& lighting, const scene::Camera& camera,
+                         const Eigen::Isometry3d& c2w, const RenderSettings& s, cv::Rect region) {
+  const cv::Rect full(0, 0, camera.width, camera.height);
+  region = region.area() > 0 ? (region & full) : full;
+  RenderedView out;
+  out.region = region;
+  out.radiance = cv::Mat(region.height, region.width, CV_32FC3, cv::Scalar::all(0));
+  out.alpha = cv::Mat(region.height, region.width, CV_32FC1, cv::Scalar::all(0));
+  out.depth = cv::Mat(region.height, region.width, CV_32FC1, cv::Scalar::all(std::numeric_limits<float>::infinity()));
+  out.shadow = cv::Mat(region.height, region.width, CV_32FC1, cv::Scalar::all(1));
+  if (region.area() == 0) return out;
+  const Tracer tracer(scene, lighting, s);
+  const int spp = std::max(1, s.spp);
+  const int strata = std::max(1, int(std::floor(std::sqrt(float(spp)))));
+  std::atomic<int> rows_done{0};
+  std::mutex progress_mu;
+  parallel_for(region.height, [&](int ry) {
+    const int y = region.y + ry;
+    auto* rad = out.radiance.ptr<cv::Vec3f>(ry);
+    auto* alpha = out.alpha.ptr<float>(ry);
+    auto* depth = out.depth.ptr<float>(ry);
+    auto* shadow = out.shadow.ptr<float>(ry);
+    for (int rx = 0; rx < region.width; ++rx) {
+      const int x = region.x + rx;
+      Rng rng(hash_seed(s.seed, uint64_t(x), uint64_t(y), uint64_t(camera.width)));
+      // Depth at the pixel centre, deterministic.
+      {
+        const Ray r = camera_ray(camera, c2w, float(x), float(y));
+        Ray probe = r;
+        probe.mask = mask::kAll & ~mask::kCatcher;
+        if (const auto h = scene.intersect(probe)) {
+          const Eigen::Vector3f axis = (c2w.linear().col(2)).cast<float>();
+          depth[rx] = h->t * r.direction.dot(axis);
+        }
+      }
+      Rgb sum = Rgb::Zero();
+      int covered = 0;
+      float lit = 0, unoccluded = 0;
+      for (int i = 0; i < spp; ++i) {
+        // Stratified over a grid for the first strata^2 samples, then random.
+        float jx, jy;
+        if (i < strata * strata) {
+          jx = (float(i % strata) + rng.uniform()) / float(strata);
+          jy = (float(i / strata) + rng.uniform()) / float(strata);
+        } else {
+          jx = rng.uniform();
+          jy = rng.uniform();
+        }
+        Ray ray = camera_ray(camera, c2w, float(x) - 0.5f + jx, float(y) - 0.5f + jy);
+        ray.time = s.shutter_open + (s.shutter_close - s.shutter_open) * rng.uniform();
+        const SampleResult r = tracer.trace(ray, rng);
+        sum += r.radiance;
+        covered += r.covered ? 1 : 0;
+        lit += r.catcher_lit;
+        unoccluded += r.catcher_unoccluded;
+      }
+      sum /= float(spp);
+      rad[rx] = {sum.x(), sum.y(), sum.z()};
+      alpha[rx] = float(covered) / float(spp);
+      shadow[rx] = unoccluded > 0 ? std::clamp(lit / unoccluded, 0.0f, 1.0f) : 1.0f;
+    }
+    const int done = ++rows_done;
+    if (s.progress && (done % 8 == 0 || done == region.height)) {
+      std::lock_guard lock(progress_mu);
+      s.progress(float(done) / float(region.height));
+    }
+  }, s.threads);
+  return out;
+}
+
+}  // namespace chatsim::render
