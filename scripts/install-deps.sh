@@ -11,7 +11,7 @@ PACKAGES=(
   libcurl4-openssl-dev googletest libgtest-dev libgmock-dev
   zlib1g-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libcpp-httplib-dev
-  libtinygltf-dev libzstd-dev
+  libtinygltf-dev libtinyobjloader-dev libzstd-dev
   # OpenImageIO's and Imath's CMake files reference these: find_package fails without them.
   openimageio-tools python3-imath
   procps psmisc

@@ -2,56 +2,12 @@
 
 #include <cctype>
 
+#include "agents/asset/catalog.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 
 namespace chatsim::agents::asset {
 namespace {
-
-struct CatalogEntry {
-  const char* asset;
-  const char* type;
-  const char* brand;  // "" for generic
-  std::array<double, 3> size;
-  std::array<int, 3> color;
-};
-
-// Real-world dimensions (metres) and a default paint; brand entries use the generic meshes of
-// their type with the brand's proportions until the asset bank (issue 7) brings real meshes.
-const std::vector<CatalogEntry>& catalog() {
-  static const std::vector<CatalogEntry> c{
-      {"sedan", "car", "", {4.6, 1.85, 1.45}, {170, 172, 176}},
-      {"suv", "suv", "", {4.8, 1.95, 1.75}, {40, 40, 45}},
-      {"pickup_truck", "truck", "", {5.9, 2.0, 1.9}, {200, 200, 205}},
-      {"box_truck", "truck", "", {8.0, 2.5, 3.3}, {235, 235, 235}},
-      {"van", "van", "", {5.0, 2.0, 2.2}, {235, 235, 235}},
-      {"city_bus", "bus", "", {12.0, 2.55, 3.2}, {230, 230, 230}},
-      {"police_car", "police", "", {4.9, 1.9, 1.5}, {20, 20, 25}},
-      {"taxi", "taxi", "", {4.6, 1.85, 1.5}, {240, 200, 20}},
-      {"ambulance", "ambulance", "", {6.0, 2.2, 2.6}, {240, 240, 240}},
-      {"firetruck", "firetruck", "", {9.0, 2.5, 3.2}, {200, 20, 20}},
-      {"motorcycle", "motorcycle", "", {2.1, 0.8, 1.3}, {30, 30, 30}},
-      {"bicycle", "bicycle", "", {1.8, 0.6, 1.1}, {30, 60, 200}},
-      {"traffic_cone", "cone", "", {0.4, 0.4, 0.7}, {250, 110, 20}},
-      {"road_barrier", "barrier", "", {2.0, 0.5, 1.0}, {240, 240, 240}},
-      {"porsche_911", "car", "porsche", {4.5, 1.85, 1.3}, {200, 25, 25}},
-      {"tesla_model_3", "car", "tesla", {4.7, 1.85, 1.45}, {240, 240, 240}},
-      {"mini_cooper", "car", "mini", {3.9, 1.75, 1.4}, {30, 90, 50}},
-      {"chevrolet_malibu", "car", "chevrolet", {4.9, 1.85, 1.45}, {30, 60, 200}},
-      {"jeep_wrangler", "suv", "jeep", {4.3, 1.9, 1.85}, {30, 90, 50}},
-      {"landrover_defender", "suv", "landrover", {4.8, 2.0, 1.97}, {40, 40, 45}},
-      {"ford_f150", "truck", "ford", {5.9, 2.0, 1.95}, {30, 60, 200}},
-      {"ram_1500", "truck", "ram", {5.8, 2.1, 1.97}, {200, 25, 25}},
-      {"scania_r", "truck", "scania", {8.0, 2.5, 3.6}, {240, 240, 240}},
-      {"harley_davidson", "motorcycle", "harley", {2.4, 0.95, 1.2}, {20, 20, 20}}};
-  return c;
-}
-
-const CatalogEntry& generic(const std::string& type) {
-  for (const auto& e : catalog())
-    if (std::string(e.brand).empty() && e.type == type) return e;
-  return catalog().front();
-}
 
 // A capitalised word right before a vehicle noun that we do not know: an unknown brand.
 std::optional<std::string> unknown_brand_in(const std::string& instruction, const std::vector<std::string>& w) {
@@ -145,28 +101,29 @@ AssetChoice choose_asset(const AssetRequest& r, const std::optional<AssetChoice>
   AssetChoice out = base.value_or(AssetChoice{});
   const bool new_vehicle = !base.has_value();
   const std::string type = r.type.value_or(base ? base->type : "car");
+  const Catalog& catalog = Catalog::instance();
   const CatalogEntry* entry = nullptr;
   if (r.brand) {
-    for (const auto& e : catalog())
+    for (const auto& e : catalog.entries())
       if (r.brand == e.brand && (!r.type || e.type == type)) entry = &e;
     if (entry == nullptr) {  // a brand we know, but not in this type: generic mesh with the brand's name
-      const auto& g = generic(type);
+      const auto& g = catalog.generic(type);
       out.asset = *r.brand + "_" + g.asset;
       out.brand_words = {*r.brand};
-      out.size_lwh = g.size;
-      if (new_vehicle) out.color_rgb = g.color;
+      out.size_lwh = g.size_lwh;
+      if (new_vehicle) out.color_rgb = g.color_rgb;
     }
   } else if (r.type && (new_vehicle || *r.type != base->type)) {
-    entry = &generic(type);
+    entry = &catalog.generic(type);
   } else if (new_vehicle) {
-    entry = &generic(type);
+    entry = &catalog.generic(type);
   }
   if (entry != nullptr) {
     out.asset = entry->asset;
     out.brand_words.clear();
-    if (std::string(entry->brand).size()) out.brand_words.push_back(entry->brand);
-    out.size_lwh = entry->size;
-    if (new_vehicle) out.color_rgb = entry->color;
+    if (!entry->brand.empty()) out.brand_words.push_back(entry->brand);
+    out.size_lwh = entry->size_lwh;
+    if (new_vehicle) out.color_rgb = entry->color_rgb;
   }
   out.type = type;
   if (const auto* vt = lexicon::vehicle_type(type)) out.category = vt->category;

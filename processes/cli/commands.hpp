@@ -14,5 +14,6 @@ void add_eval_command(CLI::App& app, int& result);
 void add_topic_command(CLI::App& app, int& result);
 void add_bag_command(CLI::App& app, int& result);
 void add_keys_command(CLI::App& app, int& result);
+void add_asset_command(CLI::App& app, int& result);
 
 }  // namespace chatsim::cli
