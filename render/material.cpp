@@ -80,18 +80,27 @@ float Bsdf::specular_probability(const Eigen::Vector3f& wo) const {
   return std::clamp(fs / (fs + diffuse), 0.05f, 0.95f);
 }
 
-Rgb Bsdf::eval(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi) const {
-  if (wo.z() <= 0 || wi.z() <= 0 || kind == MaterialKind::Emissive) return Rgb::Zero();
-  Rgb f = Rgb::Zero();
+void Bsdf::eval_lobes(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi, Rgb& diffuse, Rgb& spec) const {
+  diffuse.setZero();
+  spec.setZero();
+  if (wo.z() <= 0 || wi.z() <= 0 || kind == MaterialKind::Emissive) return;
   const float a2 = alpha * alpha;
   const Eigen::Vector3f h = (wo + wi).normalized();
   const float spec_common = ggx_d(h.z(), a2) * smith_g1(wo.z(), a2) * smith_g1(wi.z(), a2) / (4 * wo.z());
-  if (kind == MaterialKind::Metal) return schlick(albedo, wi.dot(h)) * spec_common;
-  if (specular > 0) f += Rgb::Constant(schlick(specular, wi.dot(h)) * spec_common);
+  if (kind == MaterialKind::Metal) {
+    spec = schlick(albedo, wi.dot(h)) * spec_common;
+    return;
+  }
+  if (specular > 0) spec = Rgb::Constant(schlick(specular, wi.dot(h)) * spec_common);
   // The diffuse base sees what the coat lets through, in and out.
   const float through = specular > 0 ? (1 - schlick(specular, wi.z())) * (1 - schlick(specular, wo.z())) : 1.0f;
-  f += albedo * (through * wi.z() / kPi);
-  return f;
+  diffuse = albedo * (through * wi.z() / kPi);
+}
+
+Rgb Bsdf::eval(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi) const {
+  Rgb d, s;
+  eval_lobes(wo, wi, d, s);
+  return d + s;
 }
 
 float Bsdf::pdf(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi) const {
@@ -109,7 +118,8 @@ float Bsdf::pdf(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi) const {
 bool Bsdf::sample(const Eigen::Vector3f& wo, float u0, float u1, float u2, Sample& out) const {
   if (wo.z() <= 0 || kind == MaterialKind::Emissive) return false;
   const float ps = specular_probability(wo);
-  if (u0 < ps) {
+  out.specular = u0 < ps;
+  if (out.specular) {
     // GGX normal distribution sampling: D(h) cos(h).
     const float a2 = alpha * alpha;
     const float cos2 = (1 - u1) / (1 + (a2 - 1) * u1);

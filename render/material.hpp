@@ -52,11 +52,14 @@ struct Bsdf {
   Bsdf(const Material& m, const SurfacePoint& p);
   // f(wo, wi) * cos(theta_i), both directions local and pointing away from the surface.
   Rgb eval(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi) const;
+  // The same, split into the diffuse base and the specular coat (or metal).
+  void eval_lobes(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi, Rgb& diffuse, Rgb& specular) const;
   float pdf(const Eigen::Vector3f& wo, const Eigen::Vector3f& wi) const;
   struct Sample {
     Eigen::Vector3f wi;
     Rgb weight;   // f cos / pdf
     float pdf = 0;
+    bool specular = false;  // which lobe drew it
   };
   // False when no direction could be drawn (below the surface).
   bool sample(const Eigen::Vector3f& wo, float u0, float u1, float u2, Sample& out) const;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <mutex>
 
+#include "render/denoise.hpp"
 #include "render/parallel.hpp"
 #include "render/sampling.hpp"
 
@@ -33,7 +34,9 @@ Ray camera_ray(const scene::Camera& cam, const Eigen::Isometry3d& c2w, float u, 
 namespace {
 
 struct SampleResult {
-  Rgb radiance = Rgb::Zero();
+  Rgb radiance = Rgb::Zero();  // light not to be smoothed (sun, reflections, sky seen directly)
+  Rgb diffuse = Rgb::Zero();   // diffuse sky and bounce light at the first hit (to be smoothed)
+  Rgb albedo = Rgb::Zero();    // that hit's albedo, when its light was split
   bool covered = false;       // met geometry other than the catcher
   bool on_catcher = false;
   float catcher_lit = 0, catcher_unoccluded = 0;
@@ -54,17 +57,18 @@ class Tracer {
     Rgb beta = Rgb::Ones();
     float prev_pdf = 0;
     bool prev_specular = true;  // the camera ray counts as "seen directly"
+    bool diffuse_path = false;  // continues the first hit's diffuse lobe: light goes to `diffuse`
     for (int depth = 0;; ++depth) {
       const auto hit = scene_.intersect(ray);
       if (!hit) {
         if (depth == 0 && !s_.include_sky) break;
         if (light_.sky != nullptr) {
           const float w = prev_specular ? 1.0f : mis_weight(prev_pdf, light_.sky->pdf(ray.direction));
-          add(out, beta.cwiseProduct(light_.sky->radiance(ray.direction)) * w, depth);
+          add(out, beta.cwiseProduct(light_.sky->radiance(ray.direction)) * w, depth, diffuse_path);
         }
         if (light_.has_sun() && ray.direction.dot(light_.sun_direction) >= light_.sun_cos_max) {
           const float w = prev_specular ? 1.0f : mis_weight(prev_pdf, light_.sun_pdf());
-          add(out, beta.cwiseProduct(light_.sun_radiance) * w, depth);
+          add(out, beta.cwiseProduct(light_.sun_radiance) * w, depth, diffuse_path);
         }
         break;
       }
@@ -78,7 +82,7 @@ class Tracer {
         out.covered = true;
       }
       if (mat.kind == MaterialKind::Emissive) {
-        add(out, beta.cwiseProduct(mat.emission), depth);
+        add(out, beta.cwiseProduct(mat.emission), depth, diffuse_path);
         break;
       }
       // Two-sided surfaces: both normals face the side the ray came from.
@@ -93,6 +97,9 @@ class Tracer {
       if (mat.texture) sp = mat.texture->shade(sp, hit->position, hit->uv, ns);
       const Bsdf bsdf(mat, sp);
       const Eigen::Vector3f origin = offset(hit->position, ng);
+      // The first hit's diffuse light is kept apart for smoothing (divided by albedo later).
+      const bool split = depth == 0 && s_.denoise && mat.kind == MaterialKind::Coated && sp.albedo.minCoeff() > 1e-3f;
+      if (split) out.albedo = sp.albedo;
       // The sun.
       if (light_.has_sun()) {
         const Frame sun_frame(light_.sun_direction);
@@ -102,7 +109,8 @@ class Tracer {
           const Rgb f = bsdf.eval(wo, wi);
           if (f.maxCoeff() > 0 && !blocked(origin, wi_w, ray.time)) {
             const float pdf = light_.sun_pdf();
-            add(out, beta.cwiseProduct(f).cwiseProduct(light_.sun_radiance) * (mis_weight(pdf, bsdf.pdf(wo, wi)) / pdf), depth);
+            add(out, beta.cwiseProduct(f).cwiseProduct(light_.sun_radiance) * (mis_weight(pdf, bsdf.pdf(wo, wi)) / pdf), depth,
+                diffuse_path);
           }
         }
       }
@@ -112,9 +120,17 @@ class Tracer {
         const Eigen::Vector3f wi_w = light_.sky->sample(rng.uniform(), rng.uniform(), &pdf);
         if (pdf > 0 && wi_w.dot(ng) > 0) {
           const Eigen::Vector3f wi = frame.to_local(wi_w);
-          const Rgb f = bsdf.eval(wo, wi);
-          if (f.maxCoeff() > 0 && !blocked(origin, wi_w, ray.time))
-            add(out, beta.cwiseProduct(f).cwiseProduct(light_.sky->radiance(wi_w)) * (mis_weight(pdf, bsdf.pdf(wo, wi)) / pdf), depth);
+          Rgb fd, fs;
+          bsdf.eval_lobes(wo, wi, fd, fs);
+          if ((fd + fs).maxCoeff() > 0 && !blocked(origin, wi_w, ray.time)) {
+            const Rgb light = beta.cwiseProduct(light_.sky->radiance(wi_w)) * (mis_weight(pdf, bsdf.pdf(wo, wi)) / pdf);
+            if (split) {
+              add(out, light.cwiseProduct(fd), depth, true);
+              add(out, light.cwiseProduct(fs), depth, false);
+            } else {
+              add(out, light.cwiseProduct(fd + fs), depth, diffuse_path);
+            }
+          }
         }
       }
       if (depth + 1 > s_.max_depth) break;
@@ -123,6 +139,7 @@ class Tracer {
       const Eigen::Vector3f wi_w = frame.to_world(bs.wi);
       if (wi_w.dot(ng) <= 0) break;
       beta = beta.cwiseProduct(bs.weight);
+      if (split && !bs.specular) diffuse_path = true;
       prev_pdf = bs.pdf;
       prev_specular = false;
       if (depth >= 2) {  // Russian roulette
@@ -140,13 +157,10 @@ class Tracer {
   }
 
  private:
-  void add(SampleResult& out, const Rgb& c, int depth) const {
+  void add(SampleResult& out, Rgb c, int depth, bool diffuse) const {
     if (!c.allFinite()) return;
-    if (depth > 0 && s_.clamp_indirect > 0 && c.maxCoeff() > s_.clamp_indirect) {
-      out.radiance += c * (s_.clamp_indirect / c.maxCoeff());
-      return;
-    }
-    out.radiance += c;
+    if (depth > 0 && s_.clamp_indirect > 0 && c.maxCoeff() > s_.clamp_indirect) c *= s_.clamp_indirect / c.maxCoeff();
+    (diffuse ? out.diffuse : out.radiance) += c;
   }
 
   bool blocked(const Eigen::Vector3f& origin, const Eigen::Vector3f& dir, float time, uint32_t mask = mask::kAll) const {
@@ -207,6 +221,14 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
   out.depth = cv::Mat(region.height, region.width, CV_32FC1, cv::Scalar::all(std::numeric_limits<float>::infinity()));
   out.shadow = cv::Mat(region.height, region.width, CV_32FC1, cv::Scalar::all(1));
   if (region.area() == 0) return out;
+  // For smoothing: the diffuse light over albedo, the albedo, and the centre ray's normal.
+  cv::Mat diffuse_sum, albedo_sum, normals;
+  if (s.denoise) {
+    diffuse_sum = cv::Mat(region.height, region.width, CV_32FC3, cv::Scalar::all(0));
+    albedo_sum = cv::Mat(region.height, region.width, CV_32FC3, cv::Scalar::all(0));
+    normals = cv::Mat(region.height, region.width, CV_32FC3, cv::Scalar::all(0));
+  }
+  const Eigen::Matrix3f world_to_cam = c2w.linear().transpose().cast<float>();
   const Tracer tracer(scene, lighting, s);
   const int spp = std::max(1, s.spp);
   const int strata = std::max(1, int(std::floor(std::sqrt(float(spp)))));
@@ -229,9 +251,15 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
         if (const auto h = scene.intersect(probe)) {
           const Eigen::Vector3f axis = (c2w.linear().col(2)).cast<float>();
           depth[rx] = h->t * r.direction.dot(axis);
+          if (s.denoise) {
+            Eigen::Vector3f n = h->shading_normal;
+            if (n.dot(r.direction) > 0) n = -n;
+            const Eigen::Vector3f nc = world_to_cam * n;
+            normals.at<cv::Vec3f>(ry, rx) = {nc.x(), nc.y(), nc.z()};
+          }
         }
       }
-      Rgb sum = Rgb::Zero();
+      Rgb sum = Rgb::Zero(), diffuse = Rgb::Zero(), albedo = Rgb::Zero();
       int covered = 0;
       float lit = 0, unoccluded = 0;
       for (int i = 0; i < spp; ++i) {
@@ -248,9 +276,17 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
         ray.time = s.shutter_open + (s.shutter_close - s.shutter_open) * rng.uniform();
         const SampleResult r = tracer.trace(ray, rng);
         sum += r.radiance;
+        diffuse += r.diffuse;
+        albedo += r.albedo;
         covered += r.covered ? 1 : 0;
         lit += r.catcher_lit;
         unoccluded += r.catcher_unoccluded;
+      }
+      if (s.denoise) {
+        diffuse_sum.at<cv::Vec3f>(ry, rx) = {diffuse.x(), diffuse.y(), diffuse.z()};
+        albedo_sum.at<cv::Vec3f>(ry, rx) = {albedo.x(), albedo.y(), albedo.z()};
+      } else {
+        sum += diffuse;
       }
       sum /= float(spp);
       rad[rx] = {sum.x(), sum.y(), sum.z()};
@@ -263,6 +299,28 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
       s.progress(float(done) / float(region.height));
     }
   }, s.threads);
+  if (s.denoise) {
+    // Light over albedo (per pixel, albedo-weighted over its samples), smoothed, times albedo.
+    cv::Mat illum(region.height, region.width, CV_32FC3, cv::Scalar::all(0));
+    cv::Mat valid(region.height, region.width, CV_8UC1, cv::Scalar::all(0));
+    for (int y = 0; y < region.height; ++y)
+      for (int x = 0; x < region.width; ++x) {
+        const cv::Vec3f a = albedo_sum.at<cv::Vec3f>(y, x), d = diffuse_sum.at<cv::Vec3f>(y, x);
+        if (std::min({a[0], a[1], a[2]}) <= 1e-6f || !std::isfinite(out.depth.at<float>(y, x))) {
+          out.radiance.at<cv::Vec3f>(y, x) += d / float(spp);  // nothing to smooth: keep as is
+          continue;
+        }
+        illum.at<cv::Vec3f>(y, x) = {d[0] / a[0], d[1] / a[1], d[2] / a[2]};
+        valid.at<uchar>(y, x) = 1;
+      }
+    const cv::Mat smooth = smooth_illumination(illum, normals, out.depth, valid, camera, region.tl());
+    for (int y = 0; y < region.height; ++y)
+      for (int x = 0; x < region.width; ++x)
+        if (valid.at<uchar>(y, x)) {
+          const cv::Vec3f a = albedo_sum.at<cv::Vec3f>(y, x) / float(spp), l = smooth.at<cv::Vec3f>(y, x);
+          out.radiance.at<cv::Vec3f>(y, x) += cv::Vec3f(a[0] * l[0], a[1] * l[1], a[2] * l[2]);
+        }
+  }
   return out;
 }
 

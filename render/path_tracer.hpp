@@ -38,6 +38,7 @@ struct RenderSettings {
   bool include_sky = true;       // primary rays that miss everything see the sky
   int catcher_light_samples = 2; // light samples per pixel sample on the shadow catcher
   float clamp_indirect = 0;      // >0: limit on one bounce's contribution (fireflies)
+  bool denoise = false;          // smooth the diffuse sky and bounce light (render/denoise.hpp)
   int threads = 0;               // 0: all cores
   std::function<void(float)> progress;  // 0..1; called by one worker at a time
 };

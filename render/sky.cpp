@@ -94,11 +94,13 @@ Rgb Sky::radiance(const Eigen::Vector3f& d) const {
   return preetham(d);
 }
 
-EnvMap Sky::to_env_map(int width, int height) const {
+EnvMap Sky::to_env_map(int width, int height, bool with_ground) const {
   std::vector<Rgb> px(size_t(width) * size_t(height));
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      px[size_t(y) * size_t(width) + size_t(x)] = radiance(equirect_dir((x + 0.5f) / width, (y + 0.5f) / height));
+    for (int x = 0; x < width; ++x) {
+      const Eigen::Vector3f d = equirect_dir((x + 0.5f) / width, (y + 0.5f) / height);
+      px[size_t(y) * size_t(width) + size_t(x)] = (d.z() < 0 && !with_ground) ? Rgb::Zero() : radiance(d);
+    }
   return EnvMap(width, height, std::move(px));
 }
 

@@ -37,8 +37,8 @@ class Sky {
   // Radiance of the sun disc (zero when overcast or set).
   Rgb sun_radiance() const { return sun_radiance_; }
   // The sky without the disc as an equirect map; below the horizon, a diffuse ground lit by
-  // sun and sky.
-  EnvMap to_env_map(int width = 512, int height = 256) const;
+  // sun and sky (with_ground), or black where the scene has its own ground geometry.
+  EnvMap to_env_map(int width = 512, int height = 256, bool with_ground = true) const;
 
  private:
   Rgb preetham(const Eigen::Vector3f& d) const;

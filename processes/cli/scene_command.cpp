@@ -1,5 +1,6 @@
 // chatsim scene info: validate a scene directory and summarise it.
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 
 #include <spdlog/spdlog.h>
@@ -9,6 +10,8 @@
 #include "common/scene/scene.hpp"
 #include "common/scene/scene_summary.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/progress.hpp"
+#include "render/demo/demo_generate.hpp"
 #include "processes/cli/commands.hpp"
 
 namespace chatsim::cli {
@@ -35,19 +38,55 @@ int run_info(const SceneInfoArgs& a) {
 struct DemoArgs {
   std::string out;
   uint64_t seed = 1;
-  int frames = 40;
+  int frames = 0;             // 0: the preset's
   bool layout_only = false;
+  std::string preset = "default";
+  int spp = 0;                // 0: the preset's
+  bool overcast = false;
+  bool hide_exposure = false;
+  double noise = 1.0;
+  double calibration_error_deg = 0.3;
+  double trigger_offset_scale = 1.0;
+  bool no_plates = false, no_lidar = false, no_views = false;
 };
 
-int run_demo(const DemoArgs& a) {
-  if (!a.layout_only) {
-    std::cerr << "error: rendering the demo scene's images (Embree path tracing, sky, ground truth) is not built yet "
-                 "(issue #4); run with --layout-only for the street layout, enough for every decision\n";
-    return exit_code::kUsage;
+int run_demo_render(const DemoArgs& a) {
+  render::demo::DemoRenderOptions o;
+  if (a.preset == "small") o = render::demo::small_demo_options(a.seed);
+  o.layout.seed = o.world.seed = a.seed;
+  if (a.frames > 0) o.layout.frames = a.frames;
+  if (a.spp > 0) o.spp = a.spp, o.truth_spp = std::max(o.truth_spp, 2 * a.spp);
+  o.world.overcast = a.overcast;
+  o.record_exposure = !a.hide_exposure;
+  o.noise_scale = a.noise;
+  o.calibration_error_deg = a.calibration_error_deg;
+  for (auto& t : o.trigger_offset_ms) t *= a.trigger_offset_scale;
+  o.trigger_jitter_ms *= a.trigger_offset_scale;
+  o.clean_plates = !a.no_plates;
+  o.lidar = !a.no_lidar;
+  o.truth_views = !a.no_views;
+  ProgressBar bar("demo scene");
+  o.progress = [&bar](const std::string& what, double f) { bar.update(f, what); };
+  try {
+    const auto r = render::demo::generate_demo_scene(o, a.out);
+    bar.finish();
+    std::cout << "wrote " << std::filesystem::absolute(a.out).lexically_normal().string() << ": " << r.images << " images ("
+              << o.layout.width << "x" << o.layout.height << ", " << o.spp << " spp), " << r.plates << " clean plates, "
+              << r.views << " ground-truth views, " << r.lidar_frames << " LiDAR sweeps in " << std::fixed
+              << std::setprecision(1) << r.seconds << " s (seed " << a.seed << ")\n";
+    return exit_code::kOk;
+  } catch (const std::exception& e) {
+    bar.finish();
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_code::kFailure;
   }
+}
+
+int run_demo(const DemoArgs& a) {
+  if (!a.layout_only) return run_demo_render(a);
   scene::DemoOptions o;
   o.seed = a.seed;
-  o.frames = a.frames;
+  if (a.frames > 0) o.frames = a.frames;
   const auto s = scene::demo_layout(o);
   // Written beside the target and renamed when complete, so an interrupted run leaves nothing half-written.
   const std::filesystem::path out = std::filesystem::absolute(a.out).lexically_normal();
@@ -109,12 +148,26 @@ void add_scene_command(CLI::App& app, int& result) {
   info->add_flag("--json", args->json, "print the summary as JSON");
   info->callback([args, &result] { result = run_info(*args); });
   auto demo_args = std::make_shared<DemoArgs>();
-  auto* demo = scene->add_subcommand("demo", "Generate the procedural demo street (seeded). Today only its layout "
-                                             "(--layout-only): lanes, objects, rig, ego path; images come with issue #4");
+  auto* demo = scene->add_subcommand("demo", "Generate the procedural demo street (seeded), path traced as a "
+                                             "three-camera car records it, with ground truth (held-out and shifted "
+                                             "views, clean plates, depth, sky); or only its layout");
   demo->add_option("--out", demo_args->out, "output scene directory (replaced)")->required();
   demo->add_option("--seed", demo_args->seed, "random seed (same seed, same scene)");
-  demo->add_option("--frames", demo_args->frames, "number of frames at 10 Hz")->check(CLI::Range(2, 10000));
-  demo->add_flag("--layout-only", demo_args->layout_only, "write the layout only (no images)");
+  demo->add_option("--frames", demo_args->frames, "number of frames at 10 Hz (default: the preset's)")->check(CLI::Range(2, 10000));
+  demo->add_flag("--layout-only", demo_args->layout_only, "write the layout only (no images): enough for every decision");
+  demo->add_option("--preset", demo_args->preset, "default (640x426, 40 frames) or small (160x106, 8 frames; tests)")
+      ->check(CLI::IsMember({"default", "small"}));
+  demo->add_option("--spp", demo_args->spp, "path-tracing samples per pixel of the captured images")->check(CLI::Range(1, 4096));
+  demo->add_flag("--overcast", demo_args->overcast, "an overcast sky (no sun) instead of a clear one");
+  demo->add_flag("--hide-exposure", demo_args->hide_exposure, "leave exposure_s out of scene.json (unknown exposures)");
+  demo->add_option("--noise", demo_args->noise, "sensor noise scale (0: none)")->check(CLI::Range(0.0, 20.0));
+  demo->add_option("--calibration-error-deg", demo_args->calibration_error_deg,
+                   "rotation error of the side cameras' recorded extrinsics")->check(CLI::Range(0.0, 20.0));
+  demo->add_option("--trigger-offset-scale", demo_args->trigger_offset_scale,
+                   "scale of the cameras' trigger-time offsets (0: all fire with the frame)")->check(CLI::Range(0.0, 100.0));
+  demo->add_flag("--no-plates", demo_args->no_plates, "skip the clean plates");
+  demo->add_flag("--no-lidar", demo_args->no_lidar, "skip the LiDAR sweeps");
+  demo->add_flag("--no-views", demo_args->no_views, "skip the ground-truth views");
   demo->callback([demo_args, &result] { result = run_demo(*demo_args); });
   auto* import_cmd = scene->add_subcommand("import", "Convert another dataset's scene to ours");
   import_cmd->require_subcommand(1);
