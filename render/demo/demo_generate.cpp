@@ -148,6 +148,8 @@ void write_json(const fs::path& file, const json& j) {
 }  // namespace
 
 DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_dir) {
+  if (o.image_format != "jpg" && o.image_format != "png")
+    throw std::invalid_argument("image format '" + o.image_format + "': use jpg or png");
   const auto t_start = std::chrono::steady_clock::now();
   DemoReport report;
   scene::Scene layout = scene::demo_layout(o.layout);
@@ -223,7 +225,7 @@ DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_d
       progress("images " + cam.name + " frame " + std::to_string(f.index));
       const auto view = render_view(world.scene(), world.lighting(), cam, c2w, s);
       const uint64_t noise_seed = hash_seed(o.layout.seed, uint64_t(f.index), uint64_t(c), 5);
-      const std::string rel = "images/" + cam.name + "/" + frame_name(f.index) + ".jpg";
+      const std::string rel = "images/" + cam.name + "/" + frame_name(f.index) + "." + o.image_format;
       write_rgb8(tmp / rel, expose(view.radiance, float(exposure), o.noise_scale, noise_seed, {0, 0}, cam.width), 95);
       write_exr(tmp / "ground_truth" / "depth" / cam.name / (frame_name(f.index) + ".exr"), view.depth);
       scene::ImageRef ref;

@@ -33,6 +33,7 @@ struct DemoRenderOptions {
   double calibration_error_deg = 0.3;  // rotation error of the recorded side-camera extrinsics
   double noise_scale = 1.0;            // sensor noise (0: none)
   bool record_exposure = true;         // false: exposure_s unknown in scene.json
+  std::string image_format = "jpg";    // jpg (quality 95, as cameras store them) or png (lossless)
   bool lidar = true;
   bool clean_plates = true;
   int plate_every = 4;          // clean plates on frames with index % plate_every == 0

@@ -1,0 +1,165 @@
+// The rendered demo scene: a valid scene with the realism traps it promises and ground truth
+// that agrees with it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "common/scene/camera_model.hpp"
+#include "render/demo/demo_generate.hpp"
+#include "render/image_io.hpp"
+
+namespace chatsim {
+namespace {
+namespace fs = std::filesystem;
+
+class DemoScene : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new fs::path(fs::temp_directory_path() / ("chatsim-demo-test-" + std::to_string(getpid())));
+    auto o = render::demo::small_demo_options(3);
+    o.layout.frames = 4;
+    o.layout.width = 96;
+    o.layout.height = 64;
+    o.holdout_every = 4;
+    o.holdout_phase = 1;
+    o.shifted_frames = {2};
+    o.plate_every = 2;
+    o.image_format = "png";  // lossless, so plates can be compared pixel for pixel
+    report_ = render::demo::generate_demo_scene(o, *dir_);
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  static nlohmann::json read(const fs::path& f) { return nlohmann::json::parse(std::ifstream(*dir_ / f)); }
+  static fs::path* dir_;
+  static render::demo::DemoReport report_;
+};
+fs::path* DemoScene::dir_ = nullptr;
+render::demo::DemoReport DemoScene::report_;
+
+TEST_F(DemoScene, IsAValidSceneWithImagesLidarAndDifferentExposures) {
+  const auto s = scene::load_scene(*dir_);  // checks every image and LiDAR file exists
+  EXPECT_FALSE(s.layout_only);
+  ASSERT_EQ(s.frames.size(), 4u);
+  ASSERT_EQ(s.cameras.size(), 3u);
+  EXPECT_EQ(report_.images, 12);
+  const auto& f = s.frames[1];
+  const double e_front = *f.images.at("front").exposure_s, e_left = *f.images.at("front_left").exposure_s;
+  EXPECT_GT(e_left / e_front, 1.15);  // the side cameras expose differently
+  const auto img = render::read_rgb8(*dir_ / f.images.at("front").path);
+  EXPECT_EQ(img.cols, 96);
+  EXPECT_GT(cv::mean(img)[1], 30);    // neither black ...
+  EXPECT_LT(cv::mean(img)[1], 230);   // ... nor blown out
+  const auto pts = scene::read_lidar(*dir_ / f.lidar);
+  EXPECT_GT(pts.size(), 5000u);
+}
+
+TEST_F(DemoScene, RecordedPosesAreSlightlyWrongAndTheTruthIsKept) {
+  const auto poses = read("ground_truth/poses.json")["images"];
+  ASSERT_EQ(poses.size(), 12u);
+  double max_error = 0;
+  for (const auto& p : poses) {
+    Eigen::Matrix4d t, r;
+    for (int k = 0; k < 16; ++k) t(k / 4, k % 4) = p["camera_to_world_true"][size_t(k)], r(k / 4, k % 4) = p["camera_to_world_recorded"][size_t(k)];
+    max_error = std::max(max_error, (t.block<3, 1>(0, 3) - r.block<3, 1>(0, 3)).norm());
+  }
+  // 8 m/s x (12 ms offset + up to 2 ms jitter): about a decimetre, never a metre.
+  EXPECT_GT(max_error, 0.05);
+  EXPECT_LT(max_error, 0.2);
+}
+
+TEST_F(DemoScene, DepthMatchesTheLidar) {
+  // LiDAR points seen by the front camera at frame 0 lie at the ground-truth depth there.
+  const auto s = scene::load_scene(*dir_);
+  const auto poses = read("ground_truth/poses.json")["images"];
+  Eigen::Isometry3d c2w = Eigen::Isometry3d::Identity();
+  for (const auto& p : poses)
+    if (p["camera"] == "front" && p["frame"] == 0)
+      for (int k = 0; k < 16; ++k) c2w.matrix()(k / 4, k % 4) = p["camera_to_world_true"][size_t(k)];
+  const cv::Mat depth = render::read_float_image(*dir_ / "ground_truth/depth/front/000000.exr");
+  int checked = 0, agree = 0;
+  for (const auto& lp : scene::read_lidar(*dir_ / s.frames[0].lidar)) {
+    const Eigen::Vector3d w = s.frames[0].ego_to_world * lp.xyz.cast<double>();
+    const auto pr = scene::project(*s.camera("front"), c2w, w);
+    if (!pr || !pr->in_image || pr->depth > 40) continue;
+    const float d = depth.at<float>(int(pr->pixel.y() + 0.5), int(pr->pixel.x() + 0.5));
+    ++checked;
+    // The camera fires at a slightly different time from the LiDAR: allow a little.
+    if (std::abs(d - pr->depth) < 0.05 * pr->depth + 0.15) ++agree;
+  }
+  ASSERT_GT(checked, 50);
+  EXPECT_GT(double(agree) / checked, 0.8);
+}
+
+TEST_F(DemoScene, CleanPlatesDifferOnlyWhereTheObjectWas) {
+  const auto plates = read("ground_truth/clean_plates.json")["plates"];
+  ASSERT_GT(plates.size(), 0u);
+  const auto s = scene::load_scene(*dir_);
+  int checked = 0, changed = 0;
+  for (const auto& p : plates) {
+    const cv::Rect r(p["x"], p["y"], p["width"], p["height"]);
+    const auto& frame = s.frames[size_t(p["frame"].get<int>())];
+    const cv::Mat img = render::read_rgb8(*dir_ / frame.images.at(p["camera"].get<std::string>()).path);
+    const cv::Mat plate = render::read_rgb8(*dir_ / p["path"].get<std::string>());
+    ASSERT_EQ(plate.size(), r.size());
+    const cv::Mat diff = cv::abs(img(r) - plate) + cv::abs(plate - img(r));
+    // Removing an object changes its pixels, unless something else hides it.
+    if (cv::norm(diff, cv::NORM_INF) > 20) ++changed;
+    // The crop's outer ring (padding beyond the box and its shadow) is the same picture, noise
+    // and all: at most small differences from the smoothing of light near the object.
+    if (r.width > 8 && r.height > 8) {
+      cv::Mat ring = cv::Mat::ones(r.size(), CV_8U) * 255;
+      ring(cv::Rect(2, 2, r.width - 4, r.height - 4)).setTo(0);
+      cv::Mat gray;
+      cv::cvtColor(diff, gray, cv::COLOR_RGB2GRAY);
+      std::vector<uchar> v;
+      for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x)
+          if (ring.at<uchar>(y, x)) v.push_back(gray.at<uchar>(y, x));
+      std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+      EXPECT_LE(v[v.size() / 2], 4) << p["object"] << " " << p["camera"] << " frame " << p["frame"];
+    }
+    ++checked;
+  }
+  ASSERT_GT(checked, 0);
+  EXPECT_GT(changed, checked / 2);
+}
+
+TEST_F(DemoScene, GroundTruthViewsAndSkyAreWritten) {
+  const auto views = read("ground_truth/views.json")["views"];
+  // Held-out frame 1 (3 cameras, unshifted) and frame 2 (3 cameras x 4 shifts).
+  EXPECT_EQ(views.size(), 3u + 12u);
+  for (const auto& v : views) {
+    EXPECT_TRUE(fs::exists(*dir_ / v["image"].get<std::string>()));
+    EXPECT_TRUE(fs::exists(*dir_ / v["depth"].get<std::string>()));
+  }
+  const auto sky = read("ground_truth/sky.json");
+  EXPECT_EQ(sky["sky_type"], "sunny");
+  EXPECT_GT(sky["sun_direction_world"][2].get<double>(), 0.5);
+  const auto env = render::EnvMap::read(*dir_ / "ground_truth/sky.exr");
+  EXPECT_EQ(env.width(), 512);
+}
+
+TEST(DemoSceneDeterminism, SameSeedSameImages) {
+  auto o = render::demo::small_demo_options(5);
+  o.layout.frames = 2;
+  o.layout.width = 48;
+  o.layout.height = 32;
+  o.clean_plates = o.truth_views = o.lidar = false;
+  const fs::path a = fs::temp_directory_path() / ("chatsim-demo-a-" + std::to_string(getpid()));
+  const fs::path b = fs::temp_directory_path() / ("chatsim-demo-b-" + std::to_string(getpid()));
+  render::demo::generate_demo_scene(o, a);
+  render::demo::generate_demo_scene(o, b);
+  for (const char* img : {"images/front/000001.jpg", "images/front_right/000000.jpg"})
+    EXPECT_EQ(cv::norm(render::read_rgb8(a / img), render::read_rgb8(b / img), cv::NORM_INF), 0) << img;
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
+
+}  // namespace
+}  // namespace chatsim
