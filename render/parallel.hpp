@@ -13,16 +13,17 @@ namespace chatsim::render {
 
 inline int default_threads() { return std::max(1, int(std::thread::hardware_concurrency())); }
 
-inline void parallel_for(int n, const std::function<void(int)>& body, int threads = 0) {
+// body(item, worker): worker is 0 .. threads-1, for per-thread accumulators.
+inline void parallel_for_workers(int n, int threads, const std::function<void(int, int)>& body) {
   if (threads <= 0) threads = default_threads();
   threads = std::min(threads, std::max(1, n));
   std::atomic<int> next{0};
   std::exception_ptr error;
   std::mutex error_mu;
-  auto worker = [&] {
+  auto worker = [&](int w) {
     for (int i = next++; i < n; i = next++) {
       try {
-        body(i);
+        body(i, w);
       } catch (...) {
         std::lock_guard lock(error_mu);
         if (!error) error = std::current_exception();
@@ -31,10 +32,14 @@ inline void parallel_for(int n, const std::function<void(int)>& body, int thread
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+  worker(0);
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+}
+
+inline void parallel_for(int n, const std::function<void(int)>& body, int threads = 0) {
+  parallel_for_workers(n, threads, [&](int i, int) { body(i); });
 }
 
 }  // namespace chatsim::render

@@ -1,0 +1,145 @@
+// The Gaussian rasteriser's gradients against finite differences, and its images against what
+// a Gaussian must look like.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "render/gs/rasterizer.hpp"
+
+namespace chatsim::render::gs {
+namespace {
+
+GsView small_view() {
+  GsView v;
+  v.width = 40, v.height = 30;
+  v.fx = v.fy = 40;
+  v.cx = 19.5f, v.cy = 14.5f;
+  return v;  // at the origin looking along +z (OpenCV axes = world axes)
+}
+
+Gaussians random_gaussians(int n, uint64_t seed) {
+  std::mt19937 rng{uint32_t(seed)};
+  std::uniform_real_distribution<float> u(-1, 1);
+  Gaussians g;
+  for (int i = 0; i < n; ++i) {
+    g.add({0.5f * u(rng), 0.4f * u(rng), 3 + 0.8f * u(rng)}, 0.12f + 0.05f * u(rng), {0.3f * u(rng), 0.3f * u(rng), 0.3f * u(rng)},
+          0.5f + 0.3f * u(rng));
+    float* p = g.at(size_t(i));
+    p[kScaleX] += 0.3f * u(rng), p[kScaleY] += 0.3f * u(rng);
+    p[kRotW] = 1 + 0.2f * u(rng), p[kRotX] = 0.3f * u(rng), p[kRotY] = 0.3f * u(rng), p[kRotZ] = 0.3f * u(rng);
+    for (int c = 0; c < 3; ++c) p[kColor + 4 * c + 1] = 0.2f * u(rng), p[kColor + 4 * c + 3] = 0.2f * u(rng);
+  }
+  return g;
+}
+
+struct Weights {
+  cv::Mat rad, depth, alpha;
+};
+
+Weights random_weights(const GsView& v, uint64_t seed) {
+  Weights w{cv::Mat(v.height, v.width, CV_32FC3), cv::Mat(v.height, v.width, CV_32FC1), cv::Mat(v.height, v.width, CV_32FC1)};
+  cv::RNG rng(seed);
+  rng.fill(w.rad, cv::RNG::UNIFORM, -1, 1);
+  rng.fill(w.depth, cv::RNG::UNIFORM, -0.3, 0.3);
+  rng.fill(w.alpha, cv::RNG::UNIFORM, -1, 1);
+  return w;
+}
+
+double loss(Rasterizer& r, const Gaussians& g, const SkyTexture* sky, const GsView& v, const Weights& w) {
+  const GsImage img = r.forward(g, sky, v);
+  return w.rad.dot(img.radiance) + w.depth.dot(img.depth) + w.alpha.dot(img.alpha);
+}
+
+TEST(GsRasterizer, GradientsMatchFiniteDifferences) {
+  const GsView v = small_view();
+  Gaussians g = random_gaussians(12, 3);
+  SkyTexture sky(16, 8, 0.1f);
+  const Weights w = random_weights(v, 5);
+  Rasterizer r;
+  r.min_alpha = 1e-9f;  // no cut-offs: finite differences must not jump over them
+  r.extent_sigma = 7;
+  r.forward(g, &sky, v);
+  GsGrads grads;
+  grads.reset(g.size(), size_t(sky.width() * sky.height()));
+  r.backward(g, &sky, w.rad, w.depth, w.alpha, grads);
+  int checked = 0, bad = 0;
+  for (size_t i = 0; i < g.size(); ++i)
+    for (int k = 0; k < kParamCount; ++k) {
+      const float h = 4e-3f;
+      const float keep = g.at(i)[k];
+      g.at(i)[k] = keep + h;
+      const double lp = loss(r, g, &sky, v, w);
+      g.at(i)[k] = keep - h;
+      const double lm = loss(r, g, &sky, v, w);
+      g.at(i)[k] = keep;
+      const double fd = (lp - lm) / (2 * h), an = grads.gaussians[i * kParamCount + size_t(k)];
+      if (std::abs(fd) < 1e-3 && std::abs(an) < 1e-3) continue;
+      ++checked;
+      // Float images limit finite differences to about 1e-3.
+      if (std::abs(fd - an) > 0.05 * std::max(std::abs(fd), std::abs(an)) + 3e-3) {
+        ++bad;
+        ADD_FAILURE() << "gaussian " << i << " param " << k << ": analytic " << an << " vs numeric " << fd;
+        if (bad > 10) return;
+      }
+    }
+  EXPECT_GT(checked, 100);
+  // The sky texels behind the Gaussians.
+  for (size_t t = 0; t < sky.data().size(); t += 7) {
+    const float keep = sky.data()[t];
+    sky.data()[t] = keep + 1e-3f;
+    const double lp = loss(r, g, &sky, v, w);
+    sky.data()[t] = keep - 1e-3f;
+    const double lm = loss(r, g, &sky, v, w);
+    sky.data()[t] = keep;
+    const double fd = (lp - lm) / 2e-3;
+    EXPECT_NEAR(grads.sky[t], fd, 0.03 * std::abs(fd) + 2e-3) << "sky texel " << t;
+  }
+}
+
+TEST(GsRasterizer, PoseGradientMatchesMovingTheCamera) {
+  GsView v = small_view();
+  const Gaussians g = random_gaussians(20, 7);
+  Weights w = random_weights(v, 9);
+  Rasterizer r;
+  r.min_alpha = 1e-9f;
+  r.extent_sigma = 7;
+  r.forward(g, nullptr, v);
+  GsGrads grads;
+  grads.reset(g.size(), 0);
+  r.backward(g, nullptr, w.rad, w.depth, w.alpha, grads);
+  for (int k = 3; k < 6; ++k) {  // translations (camera frame)
+    Eigen::Vector3f e = Eigen::Vector3f::Zero();
+    e[k - 3] = 1e-3f;
+    GsView a = v, b = v;
+    a.center = v.center + v.rotation * e;
+    b.center = v.center - v.rotation * e;
+    const double fd = (loss(r, g, nullptr, a, w) - loss(r, g, nullptr, b, w)) / 2e-3;
+    EXPECT_NEAR(grads.pose[k], fd, 0.05 * std::abs(fd) + 0.02) << "translation " << k - 3;
+  }
+  for (int k = 0; k < 3; ++k) {  // rotations
+    Eigen::Vector3f e = Eigen::Vector3f::Zero();
+    e[k] = 1e-3f;
+    GsView a = v, b = v;
+    a.rotation = v.rotation * Eigen::AngleAxisf(1e-3f, e.normalized()).toRotationMatrix();
+    b.rotation = v.rotation * Eigen::AngleAxisf(-1e-3f, e.normalized()).toRotationMatrix();
+    const double fd = (loss(r, g, nullptr, a, w) - loss(r, g, nullptr, b, w)) / 2e-3;
+    EXPECT_NEAR(grads.pose[k], fd, 0.05 * std::abs(fd) + 0.05) << "rotation " << k;
+  }
+}
+
+TEST(GsRasterizer, OneOpaqueGaussianLooksLikeAGaussianInFrontOfTheSky) {
+  GsView v = small_view();
+  Gaussians g;
+  g.add({0, 0, 4}, 0.2f, {std::log(2.0f), std::log(2.0f), std::log(2.0f)}, 0.9f);
+  SkyTexture sky(8, 4, std::log(0.5f));
+  Rasterizer r;
+  const GsImage img = r.forward(g, &sky, v);
+  // Centre pixel (19.5, 14.5 lies between pixels; take the nearest): 0.9 of the way to 2.
+  const float c = img.radiance.at<cv::Vec3f>(14, 19)[0];
+  EXPECT_NEAR(c, 0.9f * 2 * std::exp(-0.5f * (0.25f + 0.25f) / (0.04f * 100 + 0.3f)) + 0.5f * (1 - 0.9f * std::exp(-0.5f * 0.5f / 4.3f)), 0.02);
+  EXPECT_NEAR(img.radiance.at<cv::Vec3f>(0, 0)[1], 0.5f, 1e-4f);  // far corner: sky only
+  EXPECT_NEAR(img.depth.at<float>(14, 19) / img.alpha.at<float>(14, 19), 4.0f, 1e-3f);
+}
+
+}  // namespace
+}  // namespace chatsim::render::gs
