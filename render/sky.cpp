@@ -63,6 +63,7 @@ Sky::Sky(const SkyParams& params) : p_(params), sun_(params.sun_direction.normal
     sun_radiance_ = transmittance * (1.6e6f * kUnitsPerKcd);
   }
   // The ground below the horizon: a diffuse plane lit by the sun and the upper sky.
+  if (!p_.compute_ground) return;
   Rgb e_sky = Rgb::Zero();
   const int n = 64;
   for (int i = 0; i < n; ++i)

@@ -24,6 +24,7 @@ struct SkyParams {
   bool overcast = false;                              // CIE overcast: no sun, no azimuth
   float overcast_zenith_kcd = 3.0f;
   float ground_albedo = 0.15f;                        // below the horizon
+  bool compute_ground = true;                         // false: skip the ground's irradiance (fitting)
 };
 
 class Sky {

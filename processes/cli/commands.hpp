@@ -15,5 +15,7 @@ void add_topic_command(CLI::App& app, int& result);
 void add_bag_command(CLI::App& app, int& result);
 void add_keys_command(CLI::App& app, int& result);
 void add_asset_command(CLI::App& app, int& result);
+void add_radiance_commands(CLI::App& app, int& result);  // train, render
+void add_eval_nvs_command(CLI::App& eval, int& result);
 
 }  // namespace chatsim::cli

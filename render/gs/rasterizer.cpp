@@ -98,14 +98,18 @@ GsImage Rasterizer::forward(const Gaussians& g, const SkyTexture* sky, const GsV
       p.a = f.C / det, p.b = -f.B / det, p.c = f.A / det;
       const float mid = 0.5f * (f.A + f.C);
       const float lambda = mid + std::sqrt(std::max(0.1f, mid * mid - det));
-      p.radius = int(std::ceil(extent_sigma * std::sqrt(lambda)));
+      p.opacity = sigmoid(gp[kOpacity]);
+      // Reach: where the weight falls below min_alpha, at most extent_sigma deviations.
+      p.log_cut = std::log(min_alpha / std::max(p.opacity, 1e-12f));
+      const float reach2 = std::min(extent_sigma * extent_sigma, std::max(0.0f, -2.0f * p.log_cut));
+      if (reach2 <= 0) continue;
+      p.radius = int(std::ceil(std::sqrt(reach2 * lambda)));
       p.u = v.fx * f.p.x() / f.p.z() + v.cx;
       p.v = v.fy * f.p.y() / f.p.z() + v.cy;
       p.z = f.p.z();
       if (p.u + float(p.radius) < -0.5f || p.u - float(p.radius) > float(v.width) - 0.5f ||
           p.v + float(p.radius) < -0.5f || p.v - float(p.radius) > float(v.height) - 0.5f)
         continue;
-      p.opacity = sigmoid(gp[kOpacity]);
       for (int c = 0; c < 3; ++c) {
         const float* k = gp + kColor + 4 * c;
         p.rgb[c] = std::exp(clamp_log(k[0] + k[1] * f.dir.x() + k[2] * f.dir.y() + k[3] * f.dir.z()));
@@ -145,7 +149,8 @@ GsImage Rasterizer::forward(const Gaussians& g, const SkyTexture* sky, const GsV
     auto b = tile_ids_.begin() + tile_start_[size_t(t)], e = tile_ids_.begin() + tile_start_[size_t(t) + 1];
     std::sort(b, e, [&](uint32_t x, uint32_t y) { return proj_[x].z < proj_[y].z || (proj_[x].z == proj_[y].z && x < y); });
   }, threads);
-  // 3. Composite each tile's pixels front to back.
+  // 3. Composite each tile front to back, one Gaussian at a time over the pixels it reaches
+  // (a Gaussian-major loop: contiguous per-pixel state, no work outside its footprint).
   GsImage out;
   out.radiance = cv::Mat(v.height, v.width, CV_32FC3);
   out.depth = cv::Mat(v.height, v.width, CV_32FC1);
@@ -154,37 +159,57 @@ GsImage Rasterizer::forward(const Gaussians& g, const SkyTexture* sky, const GsV
   n_contrib_ = cv::Mat(v.height, v.width, CV_32SC1);
   parallel_for(n_tiles, [&](int t) {
     const int tx = t % tiles_x_, ty = t / tiles_x_;
+    const int x0 = tx * kTile, y0 = ty * kTile;
+    const int w = std::min(kTile, v.width - x0), h = std::min(kTile, v.height - y0);
     const uint32_t s0 = tile_start_[size_t(t)], s1 = tile_start_[size_t(t) + 1];
-    for (int y = ty * kTile; y < std::min(v.height, (ty + 1) * kTile); ++y)
-      for (int x = tx * kTile; x < std::min(v.width, (tx + 1) * kTile); ++x) {
-        float T = 1, C[3] = {0, 0, 0}, D = 0;
-        uint32_t last = 0;
-        for (uint32_t j = s0; j < s1; ++j) {
-          const Proj& p = proj_[tile_ids_[j]];
-          const float dx = p.u - float(x), dy = p.v - float(y);
+    float T[kTile * kTile], C[3][kTile * kTile], D[kTile * kTile];
+    int last[kTile * kTile];
+    bool done[kTile * kTile];
+    for (int k = 0; k < kTile * kTile; ++k) T[k] = 1, C[0][k] = C[1][k] = C[2][k] = D[k] = 0, last[k] = 0, done[k] = false;
+    int active = w * h;
+    for (uint32_t j = s0; j < s1 && active > 0; ++j) {
+      const Proj& p = proj_[tile_ids_[j]];
+      const int px0 = std::max(0, int(std::floor(p.u - float(p.radius))) - x0), px1 = std::min(w - 1, int(std::ceil(p.u + float(p.radius))) - x0);
+      const int py0 = std::max(0, int(std::floor(p.v - float(p.radius))) - y0), py1 = std::min(h - 1, int(std::ceil(p.v + float(p.radius))) - y0);
+      for (int ly = py0; ly <= py1; ++ly) {
+        const float dy = p.v - float(y0 + ly);
+        for (int lx = px0; lx <= px1; ++lx) {
+          const int k = ly * kTile + lx;
+          if (done[k]) continue;
+          const float dx = p.u - float(x0 + lx);
           const float power = -0.5f * (p.a * dx * dx + p.c * dy * dy) - p.b * dx * dy;
-          if (power > 0) continue;
+          if (power > 0 || power < p.log_cut) continue;
           const float alpha = std::min(kMaxAlpha, p.opacity * std::exp(power));
           if (alpha < min_alpha) continue;
-          const float test_t = T * (1 - alpha);
-          if (test_t < kMinTransmittance) break;
-          const float w = alpha * T;
-          C[0] += w * p.rgb[0], C[1] += w * p.rgb[1], C[2] += w * p.rgb[2];
-          D += w * p.z;
-          T = test_t;
-          last = j - s0 + 1;
+          const float test_t = T[k] * (1 - alpha);
+          if (test_t < kMinTransmittance) {
+            done[k] = true;
+            --active;
+            continue;
+          }
+          const float wgt = alpha * T[k];
+          C[0][k] += wgt * p.rgb[0], C[1][k] += wgt * p.rgb[1], C[2][k] += wgt * p.rgb[2];
+          D[k] += wgt * p.z;
+          T[k] = test_t;
+          last[k] = int(j - s0) + 1;
         }
+      }
+    }
+    for (int ly = 0; ly < h; ++ly)
+      for (int lx = 0; lx < w; ++lx) {
+        const int k = ly * kTile + lx, x = x0 + lx, y = y0 + ly;
+        float c[3] = {C[0][k], C[1][k], C[2][k]};
         if (sky != nullptr) {
           const Eigen::Vector3f dir =
               (v.rotation * Eigen::Vector3f((float(x) - v.cx) / v.fx, (float(y) - v.cy) / v.fy, 1)).normalized();
           const Eigen::Vector3f b = sky->radiance(dir);
-          for (int c = 0; c < 3; ++c) C[c] += T * b[c];
+          for (int ch = 0; ch < 3; ++ch) c[ch] += T[k] * b[ch];
         }
-        out.radiance.at<cv::Vec3f>(y, x) = {C[0], C[1], C[2]};
-        out.depth.at<float>(y, x) = D;
-        out.alpha.at<float>(y, x) = 1 - T;
-        final_t_.at<float>(y, x) = T;
-        n_contrib_.at<int>(y, x) = int(last);
+        out.radiance.at<cv::Vec3f>(y, x) = {c[0], c[1], c[2]};
+        out.depth.at<float>(y, x) = D[k];
+        out.alpha.at<float>(y, x) = 1 - T[k];
+        final_t_.at<float>(y, x) = T[k];
+        n_contrib_.at<int>(y, x) = last[k];
       }
   }, threads);
   return out;
@@ -203,62 +228,86 @@ void Rasterizer::backward(const Gaussians& g, const SkyTexture* sky, const cv::M
     for (auto& s : sky_part) s.assign(sky->data().size(), 0.0f);
   const int n_tiles = tiles_x_ * tiles_y_;
   const bool has_depth = !d_depth.empty(), has_alpha = !d_alpha.empty();
-  parallel_for_workers(n_tiles, workers, [&](int t, int w) {
-    float* P = part[size_t(w)].data();
+  parallel_for_workers(n_tiles, workers, [&](int t, int wk) {
+    float* P = part[size_t(wk)].data();
     const int tx = t % tiles_x_, ty = t / tiles_x_;
+    const int x0 = tx * kTile, y0 = ty * kTile;
+    const int w = std::min(kTile, v.width - x0), h = std::min(kTile, v.height - y0);
     const uint32_t s0 = tile_start_[size_t(t)];
-    for (int y = ty * kTile; y < std::min(v.height, (ty + 1) * kTile); ++y)
-      for (int x = tx * kTile; x < std::min(v.width, (tx + 1) * kTile); ++x) {
-        const cv::Vec3f G = d_rad.at<cv::Vec3f>(y, x);
-        const float gd = has_depth ? d_depth.at<float>(y, x) : 0.0f;
-        const float ga = has_alpha ? d_alpha.at<float>(y, x) : 0.0f;
-        const float t_final = final_t_.at<float>(y, x);
-        float T = t_final;
-        float acc_c[3] = {0, 0, 0}, acc_d = 0, acc_a = 0;
+    // Per pixel: the loss gradient, and the state walked back from the last contributor.
+    float G[3][kTile * kTile], GD[kTile * kTile], GA[kTile * kTile], T[kTile * kTile];
+    float acc_c[3][kTile * kTile], acc_d[kTile * kTile], acc_a[kTile * kTile];
+    int last[kTile * kTile];
+    int max_last = 0;
+    for (int k = 0; k < kTile * kTile; ++k) last[k] = 0;
+    for (int ly = 0; ly < h; ++ly)
+      for (int lx = 0; lx < w; ++lx) {
+        const int k = ly * kTile + lx, x = x0 + lx, y = y0 + ly;
+        const cv::Vec3f g = d_rad.at<cv::Vec3f>(y, x);
+        for (int c = 0; c < 3; ++c) G[c][k] = g[c], acc_c[c][k] = 0;
+        GD[k] = has_depth ? d_depth.at<float>(y, x) : 0.0f;
+        GA[k] = has_alpha ? d_alpha.at<float>(y, x) : 0.0f;
+        T[k] = final_t_.at<float>(y, x);
+        acc_d[k] = acc_a[k] = 0;
+        last[k] = n_contrib_.at<int>(y, x);
+        max_last = std::max(max_last, last[k]);
         if (sky != nullptr) {
           const Eigen::Vector3f dir =
               (v.rotation * Eigen::Vector3f((float(x) - v.cx) / v.fx, (float(y) - v.cy) / v.fy, 1)).normalized();
           const auto taps = sky->taps(dir);
           const Eigen::Vector3f b = sky->radiance(taps);
-          for (int c = 0; c < 3; ++c) acc_c[c] = b[c];
-          sky->backward(taps, Eigen::Vector3f(G[0], G[1], G[2]) * t_final, b, sky_part[size_t(w)].data());
+          for (int c = 0; c < 3; ++c) acc_c[c][k] = b[c];
+          sky->backward(taps, Eigen::Vector3f(g[0], g[1], g[2]) * T[k], b, sky_part[size_t(wk)].data());
         }
-        const int last = n_contrib_.at<int>(y, x);
-        for (int j = last - 1; j >= 0; --j) {
-          const uint32_t id = tile_ids_[s0 + uint32_t(j)];
-          const Proj& p = proj_[id];
-          const float dx = p.u - float(x), dy = p.v - float(y);
+      }
+    for (int j = max_last - 1; j >= 0; --j) {
+      const uint32_t id = tile_ids_[s0 + uint32_t(j)];
+      const Proj& p = proj_[id];
+      const int px0 = std::max(0, int(std::floor(p.u - float(p.radius))) - x0), px1 = std::min(w - 1, int(std::ceil(p.u + float(p.radius))) - x0);
+      const int py0 = std::max(0, int(std::floor(p.v - float(p.radius))) - y0), py1 = std::min(h - 1, int(std::ceil(p.v + float(p.radius))) - y0);
+      float d[kPartial] = {0};
+      bool touched = false;
+      for (int ly = py0; ly <= py1; ++ly) {
+        const float dy = p.v - float(y0 + ly);
+        for (int lx = px0; lx <= px1; ++lx) {
+          const int k = ly * kTile + lx;
+          if (j >= last[k]) continue;
+          const float dx = p.u - float(x0 + lx);
           const float power = -0.5f * (p.a * dx * dx + p.c * dy * dy) - p.b * dx * dy;
-          if (power > 0) continue;
+          if (power > 0 || power < p.log_cut) continue;
           const float g_exp = std::exp(power);
           const float raw = p.opacity * g_exp;
           const float alpha = std::min(kMaxAlpha, raw);
           if (alpha < min_alpha) continue;
-          const float Tj = T / (1 - alpha);
+          touched = true;
+          const float Tj = T[k] / (1 - alpha);
           const float w_j = alpha * Tj;
-          float* pp = P + size_t(id) * kPartial;
           float d_alpha_j = 0;
           for (int c = 0; c < 3; ++c) {
-            pp[c] += w_j * G[c];
-            d_alpha_j += (p.rgb[c] - acc_c[c]) * G[c];
-            acc_c[c] = alpha * p.rgb[c] + (1 - alpha) * acc_c[c];
+            d[c] += w_j * G[c][k];
+            d_alpha_j += (p.rgb[c] - acc_c[c][k]) * G[c][k];
+            acc_c[c][k] = alpha * p.rgb[c] + (1 - alpha) * acc_c[c][k];
           }
-          d_alpha_j += (p.z - acc_d) * gd + (1 - acc_a) * ga;
-          pp[9] += w_j * gd;
-          acc_d = alpha * p.z + (1 - alpha) * acc_d;
-          acc_a = alpha + (1 - alpha) * acc_a;
+          d_alpha_j += (p.z - acc_d[k]) * GD[k] + (1 - acc_a[k]) * GA[k];
+          d[9] += w_j * GD[k];
+          acc_d[k] = alpha * p.z + (1 - alpha) * acc_d[k];
+          acc_a[k] = alpha + (1 - alpha) * acc_a[k];
           d_alpha_j *= Tj;
-          T = Tj;
+          T[k] = Tj;
           if (raw >= kMaxAlpha) continue;  // clamped: flat in opacity and position
-          pp[3] += d_alpha_j * g_exp;
+          d[3] += d_alpha_j * g_exp;
           const float d_power = d_alpha_j * raw;
-          pp[4] += d_power * -(p.a * dx + p.b * dy);
-          pp[5] += d_power * -(p.b * dx + p.c * dy);
-          pp[6] += d_power * -0.5f * dx * dx;
-          pp[7] += d_power * -dx * dy;
-          pp[8] += d_power * -0.5f * dy * dy;
+          d[4] += d_power * -(p.a * dx + p.b * dy);
+          d[5] += d_power * -(p.b * dx + p.c * dy);
+          d[6] += d_power * -0.5f * dx * dx;
+          d[7] += d_power * -dx * dy;
+          d[8] += d_power * -0.5f * dy * dy;
         }
       }
+      if (!touched) continue;
+      float* pp = P + size_t(id) * kPartial;
+      for (int k = 0; k < kPartial; ++k) pp[k] += d[k];
+    }
   });
   // Sum the workers' partials and carry them back to the parameters.
   if (sky != nullptr)

@@ -60,6 +60,7 @@ class Rasterizer {
     float u, v, z;          // pixel position and camera depth
     float a, b, c;          // conic (inverse 2D covariance)
     float opacity;          // sigmoid of the logit
+    float log_cut;          // power below which the weight is under min_alpha
     float rgb[3];           // linear radiance toward this camera
     int radius;
   };

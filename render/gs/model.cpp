@@ -1,0 +1,212 @@
+#include "render/gs/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace chatsim::render::gs {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+Eigen::Isometry3d PoseCorrection::transform() const {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  const double angle = rotation.norm();
+  if (angle > 1e-12) t.linear() = Eigen::AngleAxisd(angle, rotation.cast<double>() / angle).toRotationMatrix();
+  t.translation() = translation.cast<double>();
+  return t;
+}
+
+std::optional<Eigen::Isometry3d> object_pose(const scene::Scene& scene, const scene::ObjectTrack& o, double t) {
+  // The frames around t, by timestamp.
+  const auto& fr = scene.frames;
+  if (fr.empty()) return std::nullopt;
+  size_t k = 0;
+  while (k + 1 < fr.size() && fr[k + 1].timestamp_s <= t) ++k;
+  const size_t k1 = std::min(k + 1, fr.size() - 1);
+  const double span = fr[k1].timestamp_s - fr[k].timestamp_s;
+  const double a = span > 0 ? std::clamp((t - fr[k].timestamp_s) / span, 0.0, 1.0) : 0.0;
+  auto p0 = o.at(fr[k].index), p1 = o.at(fr[k1].index);
+  if (!p0 && !p1) return std::nullopt;
+  if (!p0) p0 = p1;
+  if (!p1) p1 = p0;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = p0->center * (1 - a) + p1->center * a;
+  const double yaw = p0->yaw + a * std::remainder(p1->yaw - p0->yaw, 2 * M_PI);
+  pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return pose;
+}
+
+GsView make_view(const scene::Camera& c, const Eigen::Isometry3d& c2w) {
+  GsView v;
+  v.width = c.width, v.height = c.height;
+  v.fx = float(c.fx), v.fy = float(c.fy), v.cx = float(c.cx), v.cy = float(c.cy);
+  v.rotation = c2w.linear().cast<float>();
+  v.center = c2w.translation().cast<float>();
+  return v;
+}
+
+Gaussians RadianceField::placed(const scene::Scene& scene, double t, const std::vector<std::string>& hide,
+                                std::vector<int>* source) const {
+  std::vector<std::optional<Eigen::Isometry3f>> pose(objects.size());
+  for (size_t k = 0; k < objects.size(); ++k) {
+    if (std::find(hide.begin(), hide.end(), objects[k]) != hide.end()) continue;
+    if (const auto* o = scene.object(objects[k]))
+      if (const auto p = object_pose(scene, *o, t)) pose[k] = p->cast<float>();
+  }
+  Gaussians out;
+  out.p.reserve(gaussians.p.size());
+  if (source) source->clear();
+  for (size_t i = 0; i < gaussians.size(); ++i) {
+    const int own = owner[i];
+    if (own >= 0 && !pose[size_t(own)]) continue;
+    const size_t j = out.size();
+    out.resize(j + 1);
+    float* d = out.at(j);
+    const float* s = gaussians.at(i);
+    std::copy(s, s + kParamCount, d);
+    if (source) source->push_back(int(i));
+    if (own < 0) continue;
+    const Eigen::Isometry3f& T = *pose[size_t(own)];
+    const Eigen::Vector3f p = T * Eigen::Vector3f(s[kPosX], s[kPosY], s[kPosZ]);
+    d[kPosX] = p.x(), d[kPosY] = p.y(), d[kPosZ] = p.z();
+    const Eigen::Quaternionf q = Eigen::Quaternionf(T.linear()) * Eigen::Quaternionf(s[kRotW], s[kRotX], s[kRotY], s[kRotZ]);
+    d[kRotW] = q.w(), d[kRotX] = q.x(), d[kRotY] = q.y(), d[kRotZ] = q.z();
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Vector3f k = T.linear() * Eigen::Vector3f(s[kColor + 4 * c + 1], s[kColor + 4 * c + 2], s[kColor + 4 * c + 3]);
+      d[kColor + 4 * c + 1] = k.x(), d[kColor + 4 * c + 2] = k.y(), d[kColor + 4 * c + 3] = k.z();
+    }
+  }
+  return out;
+}
+
+GsImage RadianceField::render(const scene::Scene& scene, const scene::Camera& camera, const Eigen::Isometry3d& c2w,
+                              double t, const std::vector<std::string>& hide, int threads) const {
+  const Gaussians g = placed(scene, t, hide);
+  Rasterizer r;
+  r.threads = threads;
+  GsImage img = r.forward(g, &sky, make_view(camera, c2w));
+  // Expected depth where something is there.
+  for (int y = 0; y < img.depth.rows; ++y)
+    for (int x = 0; x < img.depth.cols; ++x) {
+      const float a = img.alpha.at<float>(y, x);
+      img.depth.at<float>(y, x) = a > 0.5f ? img.depth.at<float>(y, x) / a : std::numeric_limits<float>::infinity();
+    }
+  return img;
+}
+
+Eigen::Isometry3d RadianceField::corrected_pose(const scene::Scene& scene, int frame, const std::string& camera) const {
+  const auto* cam = scene.camera(camera);
+  const scene::Frame* fr = nullptr;
+  for (const auto& f : scene.frames)
+    if (f.index == frame) fr = &f;
+  if (cam == nullptr || fr == nullptr) throw std::invalid_argument("no image of camera '" + camera + "' at frame " + std::to_string(frame));
+  Eigen::Isometry3d pose = scene.camera_to_world(*fr, *cam);
+  if (auto it = camera_correction.find(camera); it != camera_correction.end()) pose = pose * it->second.transform();
+  if (auto it = image_correction.find({frame, camera}); it != image_correction.end()) pose = pose * it->second.transform();
+  return pose;
+}
+
+double RadianceField::exposure(const scene::Scene& scene, int frame, const std::string& camera) const {
+  double e = 1.0;
+  for (const auto& f : scene.frames)
+    if (f.index == frame)
+      if (auto it = f.images.find(camera); it != f.images.end() && it->second.exposure_s && use_exposure) e = *it->second.exposure_s;
+  if (auto it = log_exposure.find({frame, camera}); it != log_exposure.end()) return e * std::exp(double(it->second));
+  // An image not trained on (held out): the mean correction of its camera.
+  double sum = 0;
+  int n = 0;
+  for (const auto& [k, v] : log_exposure)
+    if (k.camera == camera) sum += v, ++n;
+  return e * std::exp(n > 0 ? sum / n : 0.0);
+}
+
+namespace {
+constexpr char kMagic[8] = {'C', 'S', 'G', 'S', '0', '0', '0', '1'};
+
+json pose_json(const PoseCorrection& p) {
+  return {{"rotation", {p.rotation.x(), p.rotation.y(), p.rotation.z()}},
+          {"translation", {p.translation.x(), p.translation.y(), p.translation.z()}}};
+}
+PoseCorrection pose_from(const json& j) {
+  PoseCorrection p;
+  for (int k = 0; k < 3; ++k) p.rotation[k] = j["rotation"][size_t(k)], p.translation[k] = j["translation"][size_t(k)];
+  return p;
+}
+}  // namespace
+
+void RadianceField::save(const fs::path& file) const {
+  json h = info;
+  h["count"] = gaussians.size();
+  h["params"] = int(kParamCount);
+  h["objects"] = objects;
+  h["sky"] = {sky.width(), sky.height()};
+  h["use_exposure"] = use_exposure;
+  json exp = json::array(), cams = json::object(), imgs = json::array();
+  for (const auto& [k, v] : log_exposure) exp.push_back({{"frame", k.frame}, {"camera", k.camera}, {"log", v}});
+  for (const auto& [c, p] : camera_correction) cams[c] = pose_json(p);
+  for (const auto& [k, p] : image_correction) {
+    json j = pose_json(p);
+    j["frame"] = k.frame, j["camera"] = k.camera;
+    imgs.push_back(j);
+  }
+  h["log_exposure"] = exp;
+  h["camera_correction"] = cams;
+  h["image_correction"] = imgs;
+  const std::string header = h.dump();
+  if (!file.parent_path().empty()) fs::create_directories(file.parent_path());
+  const fs::path tmp = file.string() + ".part";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    const uint64_t len = header.size();
+    out.write(kMagic, 8);
+    out.write(reinterpret_cast<const char*>(&len), 8);
+    out.write(header.data(), std::streamsize(len));
+    out.write(reinterpret_cast<const char*>(gaussians.p.data()), std::streamsize(gaussians.p.size() * sizeof(float)));
+    out.write(reinterpret_cast<const char*>(owner.data()), std::streamsize(owner.size() * sizeof(int)));
+    out.write(reinterpret_cast<const char*>(sky.data().data()), std::streamsize(sky.data().size() * sizeof(float)));
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+  }
+  fs::rename(tmp, file);
+}
+
+RadianceField RadianceField::load(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(file.string() + ": cannot be read");
+  char magic[8];
+  uint64_t len = 0;
+  in.read(magic, 8);
+  in.read(reinterpret_cast<char*>(&len), 8);
+  if (!in || std::string(magic, 8) != std::string(kMagic, 8))
+    throw std::runtime_error(file.string() + ": not a chatsim radiance field (train one with chatsim train)");
+  if (len > (1u << 30)) throw std::runtime_error(file.string() + ": corrupt header");
+  std::string header(len, '\0');
+  in.read(header.data(), std::streamsize(len));
+  RadianceField m;
+  try {
+    const json h = json::parse(header);
+    if (h.at("params").get<int>() != kParamCount) throw std::runtime_error("made by another version (parameter count)");
+    const size_t n = h.at("count");
+    m.objects = h.at("objects").get<std::vector<std::string>>();
+    m.sky = SkyTexture(h.at("sky")[0], h.at("sky")[1]);
+    m.use_exposure = h.value("use_exposure", true);
+    for (const auto& e : h.at("log_exposure")) m.log_exposure[{e["frame"], e["camera"]}] = e["log"];
+    for (const auto& [c, p] : h.at("camera_correction").items()) m.camera_correction[c] = pose_from(p);
+    for (const auto& p : h.at("image_correction")) m.image_correction[{p["frame"], p["camera"]}] = pose_from(p);
+    m.info = h;
+    for (const char* k : {"count", "params", "objects", "sky", "log_exposure", "camera_correction", "image_correction"}) m.info.erase(k);
+    m.gaussians.resize(n);
+    m.owner.resize(n);
+    in.read(reinterpret_cast<char*>(m.gaussians.p.data()), std::streamsize(m.gaussians.p.size() * sizeof(float)));
+    in.read(reinterpret_cast<char*>(m.owner.data()), std::streamsize(n * sizeof(int)));
+    in.read(reinterpret_cast<char*>(m.sky.data().data()), std::streamsize(m.sky.data().size() * sizeof(float)));
+    if (!in) throw std::runtime_error("truncated");
+    for (int o : m.owner)
+      if (o < -1 || o >= int(m.objects.size())) throw std::runtime_error("an owner index is out of range");
+  } catch (const std::exception& e) {
+    throw std::runtime_error(file.string() + ": corrupt radiance field: " + e.what());
+  }
+  return m;
+}
+
+}  // namespace chatsim::render::gs

@@ -1,0 +1,71 @@
+#include "render/gs/nvs_eval.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <map>
+
+#include <opencv2/imgproc.hpp>
+
+#include "render/gs/trainer.hpp"
+#include "render/image_io.hpp"
+#include "render/image_metrics.hpp"
+
+namespace chatsim::render::gs {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOptions& o) {
+  int width = o.max_width;
+  if (width <= 0 && model.info.contains("resolution")) width = model.info["resolution"][0].get<int>();
+  json views = json::array();
+  std::map<std::string, std::vector<json>> sets;
+  auto evaluate = [&](const std::string& set, const std::string& name, const scene::Camera& cam,
+                      const Eigen::Isometry3d& pose, double time, double exposure, const fs::path& truth_file) {
+    const scene::Camera c = scaled_camera(cam, width);
+    const auto t0 = std::chrono::steady_clock::now();
+    const GsImage img = model.render(s, c, pose, time, {}, o.threads);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    cv::Mat truth = read_rgb8(truth_file);
+    if (truth.cols != c.width || truth.rows != c.height) cv::resize(truth, truth, cv::Size(c.width, c.height), 0, 0, cv::INTER_AREA);
+    const cv::Mat pred = encode_srgb8(img.radiance, float(exposure));
+    if (!o.save_dir.empty()) write_rgb8(fs::path(o.save_dir) / set / (name + ".png"), pred);
+    const json r{{"set", set}, {"name", name}, {"psnr", psnr(pred, truth)}, {"ssim", ssim(pred, truth)}, {"render_s", secs}};
+    views.push_back(r);
+    sets[set].push_back(r);
+  };
+  // Held-out captured images.
+  for (const auto& f : s.frames) {
+    if (!held_out(f.index, o.holdout)) continue;
+    for (const auto& [cam_name, ref] : f.images) {
+      const auto* cam = s.camera(cam_name);
+      char name[64];
+      std::snprintf(name, sizeof name, "%s_%06d", cam_name.c_str(), f.index);
+      evaluate("held_out", name, *cam, model.corrected_pose(s, f.index, cam_name), ref.timestamp_s,
+               model.exposure(s, f.index, cam_name), s.dir / ref.path);
+    }
+  }
+  // The demo scene's ground-truth views.
+  const fs::path vj = s.dir / "ground_truth" / "views.json";
+  if (o.ground_truth && fs::exists(vj)) {
+    const json doc = json::parse(std::ifstream(vj));
+    for (const auto& v : doc["views"]) {
+      const auto* cam = s.camera(v["camera"].get<std::string>());
+      if (cam == nullptr) continue;
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      for (int k = 0; k < 16; ++k) pose.matrix()(k / 4, k % 4) = v["camera_to_world"][size_t(k)].get<double>();
+      const std::string shift = v["shift"];
+      evaluate(shift == "none" ? "truth_unshifted" : "truth_shifted_" + shift, v["name"], *cam, pose,
+               v["timestamp_s"].get<double>(), v["exposure_s"].get<double>(), s.dir / v["image"].get<std::string>());
+    }
+  }
+  json summary = json::object();
+  for (const auto& [name, rs] : sets) {
+    double p = 0, q = 0, t = 0;
+    for (const auto& r : rs) p += r["psnr"].get<double>(), q += r["ssim"].get<double>(), t += r["render_s"].get<double>();
+    const double n = double(rs.size());
+    summary[name] = {{"count", rs.size()}, {"psnr", p / n}, {"ssim", q / n}, {"render_s", t / n}};
+  }
+  return {{"sets", summary}, {"views", views}, {"width", width}};
+}
+
+}  // namespace chatsim::render::gs

@@ -1,0 +1,49 @@
+#pragma once
+// Training a radiance field from a scene's images: Gaussians start at the LiDAR points (those
+// inside a labelled box belong to that object) and on facades above the LiDAR's reach, then an
+// Adam optimiser fits them, the sky, per-image exposure and per-camera and per-image pose
+// corrections to the images through the sRGB OETF; Gaussians are split, cloned and pruned as
+// the image error asks, and training stops when the loss stops falling.
+#include <functional>
+#include <string>
+
+#include "common/scene/scene.hpp"
+#include "render/gs/model.hpp"
+
+namespace chatsim::render::gs {
+
+struct TrainOptions {
+  std::string preset = "fast";      // fast | quality
+  int max_iterations = 0;           // 0: the preset's
+  int max_width = 0;                // images wider than this are downscaled (0: the preset's)
+  bool exposure = true;             // use exposure_s and learn per-image corrections
+  bool pose_refinement = true;
+  int holdout = 0;                  // hold out frames with index % holdout == holdout / 2 (0: none)
+  size_t max_gaussians = 0;         // 0: the preset's
+  uint64_t seed = 1;
+  int threads = 0;
+  // iteration, total, training loss (L1), PSNR of the last image (dB), Gaussians.
+  std::function<void(int, int, double, double, size_t)> progress;
+};
+
+struct TrainReport {
+  int iterations = 0;
+  bool converged = false;
+  double seconds = 0;
+  double final_loss = 0;
+  double train_psnr = 0;           // mean over the last 100 iterations
+  size_t gaussians = 0;
+  int images = 0, held_out = 0;
+  int width = 0, height = 0;       // the training resolution
+};
+
+// True for images a holdout of `every` keeps out of training.
+inline bool held_out(int frame_index, int every) { return every > 0 && frame_index % every == every / 2; }
+
+RadianceField train(const scene::Scene& scene, const TrainOptions& options, TrainReport* report = nullptr);
+
+// A camera scaled to a smaller image (intrinsics follow), for training and rendering at lower
+// resolution.
+scene::Camera scaled_camera(const scene::Camera& camera, int max_width);
+
+}  // namespace chatsim::render::gs

@@ -1,0 +1,360 @@
+#include "render/light/light_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <opencv2/imgproc.hpp>
+
+#include "common/scene/camera_model.hpp"
+#include "common/scene/objects.hpp"
+#include "render/color.hpp"
+#include "render/equirect.hpp"
+#include "render/image_io.hpp"
+#include "render/sampling.hpp"
+
+namespace chatsim::render::light {
+namespace {
+
+constexpr int kClipped = 250;
+
+Eigen::Vector3f pixel_dir(const LightView& v, double x, double y) {
+  const Eigen::Vector3d d((x - v.camera.cx) / v.camera.fx, (y - v.camera.cy) / v.camera.fy, 1);
+  return (v.camera_to_world.linear() * d).normalized().cast<float>();
+}
+
+Rgb linear_pixel(const LightView& v, const cv::Vec3b& p) {
+  const auto& t = srgb_to_linear_table();
+  return Rgb(t[p[0]], t[p[1]], t[p[2]]) / float(v.exposure);
+}
+
+struct SkySample {
+  Eigen::Vector3f dir;
+  Rgb radiance;
+  bool clipped;
+};
+
+Eigen::Vector3f from_angles(double az, double el) {
+  return Eigen::Vector3f(float(std::cos(el) * std::cos(az)), float(std::cos(el) * std::sin(az)), float(std::sin(el)));
+}
+
+// Log-luminance error of a sky model against the samples, with the best scale.
+struct Fit {
+  double error = 1e30, log_scale = 0;
+};
+Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(const Eigen::Vector3f&)>& model) {
+  double sum = 0;
+  int n = 0;
+  std::vector<double> resid;
+  resid.reserve(samples.size());
+  for (const auto& s : samples) {
+    if (s.clipped) continue;
+    const double r = std::log(std::max(luminance(s.radiance), 1e-9f)) - std::log(std::max(model(s.dir), 1e-9f));
+    resid.push_back(r);
+    sum += r;
+    ++n;
+  }
+  Fit f;
+  if (n == 0) return f;
+  f.log_scale = sum / n;
+  double e = 0;
+  for (double r : resid) e += (r - f.log_scale) * (r - f.log_scale);
+  f.error = e / n;
+  return f;
+}
+
+// How much darker the ground is where boxes would cast their shadows for a sun direction.
+struct ShadowCue {
+  double score = 0;     // mean log(lit / shadow) over the boxes that could be measured
+  double ratio = 1;     // median lit / shadow
+  int boxes = 0;
+};
+
+ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::Mat>& gray, const std::vector<GroundBox>& boxes,
+                     const Eigen::Vector3d& sun) {
+  ShadowCue cue;
+  if (sun.z() < 0.08) return cue;
+  std::vector<double> logs, ratios;
+  for (const auto& b : boxes) {
+    const double ground = b.center.z() - b.size_lwh.z() / 2;
+    const auto corners = scene::box_corners(b.center, b.size_lwh, b.yaw);
+    std::vector<Eigen::Vector3d> shadow_pts, foot_pts;
+    for (const auto& c : corners) {
+      const double h = c.z() - ground;
+      const Eigen::Vector3d g = c - sun * (h / sun.z());
+      shadow_pts.emplace_back(g.x(), g.y(), ground);
+      foot_pts.emplace_back(c.x(), c.y(), ground);
+    }
+    for (size_t vi = 0; vi < views.size(); ++vi) {
+      const auto& v = views[vi];
+      auto to_image = [&](const std::vector<Eigen::Vector3d>& pts, std::vector<cv::Point>& out) {
+        out.clear();
+        for (const auto& p : pts) {
+          const auto pr = scene::project(v.camera, v.camera_to_world, p, 0.5);
+          if (!pr || pr->depth > 30) return false;
+          out.emplace_back(int(std::lround(pr->pixel.x())), int(std::lround(pr->pixel.y())));
+        }
+        return true;
+      };
+      std::vector<cv::Point> sh, ft, body;
+      std::vector<Eigen::Vector3d> all(corners.begin(), corners.end());
+      if (!to_image(shadow_pts, sh) || !to_image(foot_pts, ft) || !to_image(all, body)) continue;
+      std::vector<cv::Point> hull_sh, hull_ft, hull_body;
+      std::vector<cv::Point> sh_all = sh;
+      sh_all.insert(sh_all.end(), ft.begin(), ft.end());
+      cv::convexHull(sh_all, hull_sh);
+      cv::convexHull(ft, hull_ft);
+      cv::convexHull(body, hull_body);
+      const cv::Rect area = cv::boundingRect(hull_sh) & cv::Rect(0, 0, v.camera.width, v.camera.height);
+      if (area.area() < 50) continue;
+      cv::Mat shadow(v.camera.height, v.camera.width, CV_8U, cv::Scalar(0)), blocked = shadow.clone();
+      cv::fillConvexPoly(shadow, hull_sh, 255);
+      cv::fillConvexPoly(blocked, hull_body, 255);
+      cv::fillConvexPoly(blocked, hull_ft, 255);
+      cv::dilate(blocked, blocked, cv::Mat(), cv::Point(-1, -1), 2);
+      cv::Mat ring;
+      cv::dilate(shadow, ring, cv::Mat(), cv::Point(-1, -1), std::max(4, int(std::sqrt(area.area()) / 6)));
+      ring.setTo(0, shadow);
+      ring.setTo(0, blocked);
+      shadow.setTo(0, blocked);
+      std::vector<float> in, out;
+      for (int y = 0; y < shadow.rows; ++y)
+        for (int x = 0; x < shadow.cols; ++x) {
+          if (shadow.at<uchar>(y, x)) in.push_back(gray[vi].at<float>(y, x));
+          else if (ring.at<uchar>(y, x)) out.push_back(gray[vi].at<float>(y, x));
+        }
+      if (in.size() < 30 || out.size() < 30) continue;
+      std::nth_element(in.begin(), in.begin() + long(in.size() / 2), in.end());
+      std::nth_element(out.begin(), out.begin() + long(out.size() / 2), out.end());
+      const double r = (out[out.size() / 2] + 1e-4) / (in[in.size() / 2] + 1e-4);
+      logs.push_back(std::log(std::max(r, 1e-3)));
+      ratios.push_back(r);
+    }
+  }
+  if (logs.empty()) return cue;
+  cue.boxes = int(logs.size());
+  for (double l : logs) cue.score += l;
+  cue.score /= double(logs.size());
+  std::nth_element(ratios.begin(), ratios.begin() + long(ratios.size() / 2), ratios.end());
+  cue.ratio = ratios[ratios.size() / 2];
+  return cue;
+}
+
+}  // namespace
+
+cv::Mat sky_mask(const LightView& v) {
+  const int w = v.rgb.cols, h = v.rgb.rows;
+  cv::Mat gray, grad_x, grad_y;
+  cv::cvtColor(v.rgb, gray, cv::COLOR_RGB2GRAY);
+  cv::GaussianBlur(gray, gray, cv::Size(3, 3), 0);
+  cv::Sobel(gray, grad_x, CV_32F, 1, 0);
+  cv::Sobel(gray, grad_y, CV_32F, 0, 1);
+  cv::Mat grad = cv::abs(grad_x) + cv::abs(grad_y);
+  std::vector<uchar> above;
+  cv::Mat up(h, w, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (pixel_dir(v, x, y).z() > 0.02f) {
+        up.at<uchar>(y, x) = 1;
+        above.push_back(gray.at<uchar>(y, x));
+      }
+  cv::Mat cand(h, w, CV_8U, cv::Scalar(0));
+  if (above.empty()) return cand;
+  std::nth_element(above.begin(), above.begin() + long(above.size() * 95 / 100), above.end());
+  const int bright = int(above[above.size() * 95 / 100] * 0.55);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!up.at<uchar>(y, x)) continue;
+      const cv::Vec3b p = v.rgb.at<cv::Vec3b>(y, x);
+      const bool smooth = grad.at<float>(y, x) < 40;  // Sobel of a 3x3-blurred image: gentle gradients only
+      const bool skyish = p[2] >= 0.85 * p[0] && gray.at<uchar>(y, x) >= bright;
+      if ((smooth && skyish) || (p[0] >= kClipped && p[1] >= kClipped && p[2] >= kClipped)) cand.at<uchar>(y, x) = 255;
+    }
+  // Only regions reached from the top of the image.
+  cv::Mat labels;
+  const int n = cv::connectedComponents(cand, labels, 4, CV_32S);
+  std::vector<uint8_t> keep(size_t(n), 0);
+  for (int y = 0; y < std::max(1, h / 20); ++y)
+    for (int x = 0; x < w; ++x) keep[size_t(labels.at<int>(y, x))] = 1;
+  keep[0] = 0;
+  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (keep[size_t(labels.at<int>(y, x))]) mask.at<uchar>(y, x) = 255;
+  return mask;
+}
+
+EnvMap LightEstimate::dome(int width, int height) const {
+  SkyParams p = sky;
+  p.compute_ground = true;
+  const Sky model(p);
+  EnvMap m = model.to_env_map(width, height, true);
+  for (int y = 0; y < m.height(); ++y)
+    for (int x = 0; x < m.width(); ++x) m.at(x, y) *= scale;
+  m.update();
+  return m;
+}
+
+nlohmann::json LightEstimate::to_json(const std::string& sky_exr) const {
+  const Eigen::Vector3f d = sky.sun_direction.normalized();
+  nlohmann::json j{{"sky_type", sunny ? "sunny" : "overcast"},
+                   {"sun_direction_world", {d.x(), d.y(), d.z()}},
+                   {"sun_radiance_rgb", {sun_radiance.x(), sun_radiance.y(), sun_radiance.z()}},
+                   {"sun_solid_angle_sr", sun_solid_angle_sr()},
+                   {"sky_exr", sky_exr},
+                   {"sky_mapping", std::string(kEquirectMapping) + "; the sun disc is not in the EXR; below the horizon a diffuse ground"},
+                   {"sun_cue", sun_cue},
+                   {"turbidity", sky.turbidity},
+                   {"fit_rms_log_error", std::sqrt(fit_error)},
+                   {"sky_pixels", sky_pixels}};
+  if (!sunny) j["sun_radiance_rgb"] = {0.0, 0.0, 0.0};
+  return j;
+}
+
+LightEstimate estimate_light(const std::vector<LightView>& views, const std::vector<GroundBox>& boxes) {
+  LightEstimate est;
+  std::mt19937 rng(7);
+  std::vector<SkySample> samples;
+  double blue = 0;
+  int blue_n = 0;
+  Eigen::Vector3d sun_visible = Eigen::Vector3d::Zero();
+  double sun_visible_area = 0;
+  std::vector<cv::Mat> gray;
+  for (const auto& v : views) {
+    const cv::Mat mask = sky_mask(v);
+    // Linear luminance for the shadow cue.
+    cv::Mat g(v.rgb.rows, v.rgb.cols, CV_32F);
+    for (int y = 0; y < v.rgb.rows; ++y)
+      for (int x = 0; x < v.rgb.cols; ++x) g.at<float>(y, x) = luminance(linear_pixel(v, v.rgb.at<cv::Vec3b>(y, x)));
+    gray.push_back(g);
+    // A visible sun: a clipped blob mostly surrounded by sky.
+    cv::Mat clipped(v.rgb.rows, v.rgb.cols, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < v.rgb.rows; ++y)
+      for (int x = 0; x < v.rgb.cols; ++x) {
+        const cv::Vec3b p = v.rgb.at<cv::Vec3b>(y, x);
+        if (mask.at<uchar>(y, x) && p[0] >= kClipped && p[1] >= kClipped && p[2] >= kClipped) clipped.at<uchar>(y, x) = 255;
+      }
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(clipped, labels, stats, centroids);
+    for (int k = 1; k < n; ++k) {
+      const int area = stats.at<int>(k, cv::CC_STAT_AREA);
+      if (area < 4 || size_t(area) > v.rgb.total() / 50 || area <= sun_visible_area) continue;
+      sun_visible_area = area;
+      sun_visible = pixel_dir(v, centroids.at<double>(k, 0), centroids.at<double>(k, 1)).cast<double>();
+    }
+    // Sky samples (a random subset).
+    std::vector<cv::Point> sky_px;
+    for (int y = 0; y < mask.rows; ++y)
+      for (int x = 0; x < mask.cols; ++x)
+        if (mask.at<uchar>(y, x)) sky_px.emplace_back(x, y);
+    std::shuffle(sky_px.begin(), sky_px.end(), rng);
+    if (sky_px.size() > 1500) sky_px.resize(1500);
+    for (const auto& p : sky_px) {
+      const cv::Vec3b c = v.rgb.at<cv::Vec3b>(p);
+      SkySample s{pixel_dir(v, p.x, p.y), linear_pixel(v, c), c[0] >= kClipped || c[1] >= kClipped || c[2] >= kClipped};
+      samples.push_back(s);
+      if (!s.clipped && s.radiance.x() > 0) blue += s.radiance.z() / s.radiance.x(), ++blue_n;
+    }
+    est.sky_pixels += cv::countNonZero(mask);
+  }
+  const double blue_ratio = blue_n > 0 ? blue / blue_n : 1.0;
+  // Overcast: CIE, one parameter.
+  const Fit overcast = fit_model(samples, [](const Eigen::Vector3f& d) { return (1 + 2 * std::max(d.z(), 0.0f)) / 3; });
+  // Clear: Preetham over sun directions and turbidities, with the shadow cue where boxes are.
+  struct Candidate {
+    double az, el, turbidity, cost;
+    Fit fit;
+    ShadowCue cue;
+  };
+  auto evaluate = [&](double az, double el, double T) {
+    SkyParams p;
+    p.sun_direction = from_angles(az, el);
+    p.turbidity = float(T);
+    p.compute_ground = false;
+    const Sky sky(p);
+    Candidate c{az, el, T, 0, fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }), {}};
+    if (!boxes.empty()) c.cue = shadow_cue(views, gray, boxes, p.sun_direction.cast<double>());
+    c.cost = (samples.empty() ? 0.0 : c.fit.error) - 0.5 * c.cue.score;
+    return c;
+  };
+  Candidate best{0, 0, 3, 1e30, {}, {}};
+  const bool visible = sun_visible_area > 0 && sun_visible.z() > 0.02;
+  if (visible) {
+    const double az = std::atan2(sun_visible.y(), sun_visible.x()), el = std::asin(std::clamp(sun_visible.z(), -1.0, 1.0));
+    for (double T : {2.0, 2.5, 3.0, 4.0, 5.0, 7.0}) {
+      const Candidate c = evaluate(az, el, T);
+      if (c.cost < best.cost) best = c;
+    }
+    est.sun_cue = "visible";
+  } else {
+    for (int ai = 0; ai < 72; ++ai)
+      for (int ei = 1; ei <= 17; ++ei)
+        for (double T : {2.5, 4.0, 6.0}) {
+          const Candidate c = evaluate(ai * 5 * M_PI / 180, ei * 5 * M_PI / 180, T);
+          if (c.cost < best.cost) best = c;
+        }
+    // Refine around the best.
+    const Candidate coarse = best;
+    for (int da = -4; da <= 4; ++da)
+      for (int de = -4; de <= 4; ++de)
+        for (double T : {coarse.turbidity - 0.5, coarse.turbidity, coarse.turbidity + 1.0}) {
+          const double el = coarse.el + de * M_PI / 180;
+          if (el < 2 * M_PI / 180 || el > 89 * M_PI / 180 || T < 1.8) continue;
+          const Candidate c = evaluate(coarse.az + da * M_PI / 180, el, T);
+          if (c.cost < best.cost) best = c;
+        }
+    est.sun_cue = best.cue.boxes > 0 && best.cue.score > 0.15 ? "shadows" : "sky_gradient";
+  }
+  // Sunny or overcast: a blue sky, a visible sun or real shadows say sunny.
+  est.sunny = visible || best.cue.score > 0.25 || (blue_ratio > 1.2 && best.fit.error < overcast.error * 1.5);
+  if (samples.empty() && best.cue.boxes == 0) est.sunny = false;
+  est.sky.sun_direction = from_angles(best.az, best.el);
+  est.sky.turbidity = float(best.turbidity);
+  if (!est.sunny) {
+    est.sky.overcast = true;
+    est.scale = float(std::exp(overcast.log_scale) / (est.sky.overcast_zenith_kcd * kUnitsPerKcd));
+    est.fit_error = overcast.error;
+    est.sun_cue = "none";
+    return est;
+  }
+  est.scale = float(std::exp(best.fit.log_scale));
+  est.fit_error = best.fit.error;
+  SkyParams p = est.sky;
+  const Sky model(p);
+  const Rgb model_sun = model.sun_radiance() * est.scale;
+  if (best.cue.boxes > 0 && best.cue.ratio > 1.2) {
+    // Lit / shadow = (E_sun + E_sky) / (v E_sky): the sun's irradiance from the sky's, where v
+    // is the share of the sky a car's shadow still sees (about 0.8).
+    const EnvMap dome = est.dome(128, 64);
+    const double e_sky = luminance(dome.irradiance(Eigen::Vector3f::UnitZ()));
+    const double e_sun = std::max(0.0, best.cue.ratio * 0.8 - 1) * e_sky;
+    const double lum = e_sun / (sun_solid_angle_sr() * std::max(0.05f, est.sky.sun_direction.z()));
+    est.sun_radiance = model_sun / std::max(luminance(model_sun), 1e-9f) * float(lum);
+  } else {
+    est.sun_radiance = model_sun;
+  }
+  return est;
+}
+
+std::vector<LightView> scene_light_views(const scene::Scene& s, int frame) {
+  std::vector<LightView> out;
+  for (const auto& f : s.frames) {
+    if (f.index != frame) continue;
+    for (const auto& [name, ref] : f.images) {
+      const auto* cam = s.camera(name);
+      if (cam == nullptr) continue;
+      out.push_back({*cam, s.camera_to_world(f, *cam), read_rgb8(s.dir / ref.path), ref.exposure_s.value_or(1.0)});
+    }
+  }
+  return out;
+}
+
+std::vector<GroundBox> scene_ground_boxes(const scene::Scene& s, int frame) {
+  std::vector<GroundBox> out;
+  for (const auto& o : s.objects)
+    if (o.has_category_prefix("vehicle"))
+      if (const auto p = o.at(frame)) out.push_back({p->center, o.size_lwh, p->yaw});
+  return out;
+}
+
+}  // namespace chatsim::render::light

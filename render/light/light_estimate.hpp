@@ -1,0 +1,59 @@
+#pragma once
+// Lighting estimation from a car's LDR camera images: an HDR sky dome with a sun, in the scene's
+// radiance units. Sky pixels (bright, smooth, above the horizon, reached from the top of the
+// image) are fitted by a Preetham clear sky or a CIE overcast sky; the sun's direction comes
+// from a visible sun, else from the shadows that labelled boxes cast on the ground, else from
+// the sky's brightness pattern; its intensity from the lit-to-shadow contrast on the ground,
+// else from the fitted sky's own model.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+
+#include "common/scene/scene.hpp"
+#include "render/env_map.hpp"
+#include "render/sky.hpp"
+
+namespace chatsim::render::light {
+
+struct LightView {
+  scene::Camera camera;
+  Eigen::Isometry3d camera_to_world;  // world z up
+  cv::Mat rgb;                        // CV_8UC3, RGB
+  double exposure = 1.0;              // seconds (1: unknown)
+};
+
+struct GroundBox {                    // a labelled object standing on the ground (shadow cue)
+  Eigen::Vector3d center;
+  Eigen::Vector3d size_lwh;
+  double yaw = 0;
+};
+
+struct LightEstimate {
+  bool sunny = true;
+  SkyParams sky;                      // the fitted model (sun direction, turbidity / overcast)
+  float scale = 1;                    // the model's radiance multiplier that fits the images
+  Rgb sun_radiance = Rgb::Zero();
+  std::string sun_cue;                // "visible", "shadows", "sky_gradient", "none"
+  double fit_error = 0;               // RMS log error on sky pixels
+  int sky_pixels = 0;
+
+  // The dome without the sun disc (below the horizon: a diffuse ground lit by it).
+  EnvMap dome(int width = 256, int height = 128) const;
+  // The contract's JSON (SCENE_FORMAT.md, lighting output).
+  nlohmann::json to_json(const std::string& sky_exr) const;
+};
+
+LightEstimate estimate_light(const std::vector<LightView>& views, const std::vector<GroundBox>& boxes = {});
+
+// The views and boxes of one frame of a scene (all its cameras).
+std::vector<LightView> scene_light_views(const scene::Scene& scene, int frame);
+std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);
+
+// Which pixels of a view show the sky (CV_8UC1, 255 = sky).
+cv::Mat sky_mask(const LightView& view);
+
+}  // namespace chatsim::render::light
