@@ -17,5 +17,7 @@ void add_keys_command(CLI::App& app, int& result);
 void add_asset_command(CLI::App& app, int& result);
 void add_radiance_commands(CLI::App& app, int& result);  // train, render
 void add_eval_nvs_command(CLI::App& eval, int& result);
+void add_light_command(CLI::App& app, int& result);
+void add_eval_light_command(CLI::App& eval, int& result);
 
 }  // namespace chatsim::cli

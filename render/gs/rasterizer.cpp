@@ -1,7 +1,9 @@
 #include "render/gs/rasterizer.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "render/parallel.hpp"
 
@@ -58,6 +60,118 @@ bool footprint(const float* g, const GsView& v, float near_m, Footprint& f) {
 }
 
 float clamp_log(float l) { return std::min(l, kMaxLogRadiance); }
+
+// exp(x) for x <= 0 by 2^x = 2^floor * polynomial: branch-free, so the pixel loops below
+// vectorise (relative error about 2e-7).
+inline float fast_exp(float x) {
+  const float t = std::max(x, -87.0f) * 1.44269504f;
+  const float fi = std::floor(t);
+  const float f = t - fi;
+  float p = 1.8775767e-3f;
+  p = p * f + 8.9893397e-3f;
+  p = p * f + 5.5826318e-2f;
+  p = p * f + 2.4015361e-1f;
+  p = p * f + 6.9315308e-1f;
+  p = p * f + 9.9999994e-1f;
+  const int32_t bits = (int32_t(fi) + 127) << 23;
+  return p * std::bit_cast<float>(bits);
+}
+
+constexpr int kT = 16;          // tile side (Rasterizer::kTile)
+constexpr int kPix = kT * kT;
+
+struct TileState {               // per pixel of one tile, rows of 16
+  alignas(64) float T[kPix], C0[kPix], C1[kPix], C2[kPix], D[kPix], last[kPix], done[kPix], inside[kPix];
+};
+
+struct ProjView {                // the per-Gaussian values the pixel loops read
+  float u, v, z, a, b, c, opacity, log_cut, r0, r1, r2;
+  int radius;
+};
+
+// Blends one Gaussian into the rows [py0, py1] of a tile (x0, y0 its origin); j1 = its index + 1.
+__attribute__((target_clones("avx2", "default")))
+void blend_rows(TileState& s, const ProjView& p, int x0, int y0, int px0, int px1, int py0, int py1, float j1, float min_alpha) {
+  // Whole 8-pixel halves of each row: one vector each.
+  const int c0 = px0 & ~7, c1 = (px1 | 7) + 1;
+  for (int ly = py0; ly <= py1; ++ly) {
+    const float dy = p.v - float(y0 + ly);
+    const int row = ly * kT;
+    for (int lx = c0; lx < c1; ++lx) {
+      const int k = row + lx;
+      const float dx = p.u - float(x0 + lx);
+      const float power = -0.5f * (p.a * dx * dx + p.c * dy * dy) - p.b * dx * dy;
+      const float alpha = std::min(kMaxAlpha, p.opacity * fast_exp(power));
+      // Bitwise & (no short circuit) keeps the loop free of branches.
+      const bool valid = (power <= 0) & (power >= p.log_cut) & (alpha >= min_alpha) & (s.done[k] == 0) & (s.inside[k] != 0);
+      const float test_t = s.T[k] * (1 - alpha);
+      const bool stop = valid & (test_t < kMinTransmittance);
+      const bool add = valid & !stop;
+      const float w = add ? alpha * s.T[k] : 0.0f;
+      s.C0[k] += w * p.r0;
+      s.C1[k] += w * p.r1;
+      s.C2[k] += w * p.r2;
+      s.D[k] += w * p.z;
+      s.T[k] = add ? test_t : s.T[k];
+      s.last[k] = add ? j1 : s.last[k];
+      s.done[k] = stop ? 1.0f : s.done[k];
+    }
+  }
+}
+
+struct BackState {               // per pixel of one tile, walking back from the last contributor
+  alignas(64) float G0[kPix], G1[kPix], G2[kPix], GD[kPix], GA[kPix], T[kPix];
+  alignas(64) float A0[kPix], A1[kPix], A2[kPix], AD[kPix], AA[kPix], last[kPix];
+};
+
+// The gradient of one Gaussian (index j) over rows [py0, py1]; out: d rgb[3], opacity, u, v,
+// conic a, b, c, z. Returns false when it touched no pixel.
+__attribute__((target_clones("avx2", "default")))
+bool unblend_rows(BackState& s, const ProjView& p, int x0, int y0, int px0, int px1, int py0, int py1, float j, float min_alpha,
+                  float* out) {
+  float d0 = 0, d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0, d6 = 0, d7 = 0, d8 = 0, d9 = 0, n = 0;
+  const int c0 = px0 & ~7, c1 = (px1 | 7) + 1;
+  for (int ly = py0; ly <= py1; ++ly) {
+    const float dy = p.v - float(y0 + ly);
+    const int row = ly * kT;
+    for (int lx = c0; lx < c1; ++lx) {
+      const int k = row + lx;
+      const float dx = p.u - float(x0 + lx);
+      const float power = -0.5f * (p.a * dx * dx + p.c * dy * dy) - p.b * dx * dy;
+      const float g_exp = fast_exp(power);
+      const float raw = p.opacity * g_exp;
+      const float alpha = std::min(kMaxAlpha, raw);
+      const bool valid = (j < s.last[k]) & (power <= 0) & (power >= p.log_cut) & (alpha >= min_alpha);
+      const float m = valid ? 1.0f : 0.0f;
+      const float Tj = s.T[k] / (1 - alpha);
+      const float wj = m * alpha * Tj;
+      const float d_alpha = ((p.r0 - s.A0[k]) * s.G0[k] + (p.r1 - s.A1[k]) * s.G1[k] + (p.r2 - s.A2[k]) * s.G2[k] +
+                             (p.z - s.AD[k]) * s.GD[k] + (1 - s.AA[k]) * s.GA[k]) * Tj * m;
+      const float free = raw < kMaxAlpha ? 1.0f : 0.0f;  // clamped: flat in opacity and position
+      const float d_power = d_alpha * raw * free;
+      d0 += wj * s.G0[k];
+      d1 += wj * s.G1[k];
+      d2 += wj * s.G2[k];
+      d9 += wj * s.GD[k];
+      d3 += d_alpha * g_exp * free;
+      d4 += d_power * -(p.a * dx + p.b * dy);
+      d5 += d_power * -(p.b * dx + p.c * dy);
+      d6 += d_power * -0.5f * dx * dx;
+      d7 += d_power * -dx * dy;
+      d8 += d_power * -0.5f * dy * dy;
+      n += m;
+      const float keep = 1 - m * alpha;
+      s.A0[k] = m * alpha * p.r0 + keep * s.A0[k];
+      s.A1[k] = m * alpha * p.r1 + keep * s.A1[k];
+      s.A2[k] = m * alpha * p.r2 + keep * s.A2[k];
+      s.AD[k] = m * alpha * p.z + keep * s.AD[k];
+      s.AA[k] = m * alpha + keep * s.AA[k];
+      s.T[k] = valid ? Tj : s.T[k];
+    }
+  }
+  out[0] = d0, out[1] = d1, out[2] = d2, out[3] = d3, out[4] = d4, out[5] = d5, out[6] = d6, out[7] = d7, out[8] = d8, out[9] = d9;
+  return n > 0;
+}
 
 }  // namespace
 
@@ -157,59 +271,45 @@ GsImage Rasterizer::forward(const Gaussians& g, const SkyTexture* sky, const GsV
   out.alpha = cv::Mat(v.height, v.width, CV_32FC1);
   final_t_ = cv::Mat(v.height, v.width, CV_32FC1);
   n_contrib_ = cv::Mat(v.height, v.width, CV_32SC1);
+  static_assert(kTile == kT);
   parallel_for(n_tiles, [&](int t) {
     const int tx = t % tiles_x_, ty = t / tiles_x_;
     const int x0 = tx * kTile, y0 = ty * kTile;
     const int w = std::min(kTile, v.width - x0), h = std::min(kTile, v.height - y0);
     const uint32_t s0 = tile_start_[size_t(t)], s1 = tile_start_[size_t(t) + 1];
-    float T[kTile * kTile], C[3][kTile * kTile], D[kTile * kTile];
-    int last[kTile * kTile];
-    bool done[kTile * kTile];
-    for (int k = 0; k < kTile * kTile; ++k) T[k] = 1, C[0][k] = C[1][k] = C[2][k] = D[k] = 0, last[k] = 0, done[k] = false;
-    int active = w * h;
-    for (uint32_t j = s0; j < s1 && active > 0; ++j) {
+    TileState st;
+    for (int k = 0; k < kPix; ++k) {
+      st.T[k] = 1, st.C0[k] = st.C1[k] = st.C2[k] = st.D[k] = st.last[k] = st.done[k] = 0;
+      st.inside[k] = (k % kT < w && k / kT < h) ? 1.0f : 0.0f;
+    }
+    for (uint32_t j = s0; j < s1; ++j) {
       const Proj& p = proj_[tile_ids_[j]];
-      const int px0 = std::max(0, int(std::floor(p.u - float(p.radius))) - x0), px1 = std::min(w - 1, int(std::ceil(p.u + float(p.radius))) - x0);
       const int py0 = std::max(0, int(std::floor(p.v - float(p.radius))) - y0), py1 = std::min(h - 1, int(std::ceil(p.v + float(p.radius))) - y0);
-      for (int ly = py0; ly <= py1; ++ly) {
-        const float dy = p.v - float(y0 + ly);
-        for (int lx = px0; lx <= px1; ++lx) {
-          const int k = ly * kTile + lx;
-          if (done[k]) continue;
-          const float dx = p.u - float(x0 + lx);
-          const float power = -0.5f * (p.a * dx * dx + p.c * dy * dy) - p.b * dx * dy;
-          if (power > 0 || power < p.log_cut) continue;
-          const float alpha = std::min(kMaxAlpha, p.opacity * std::exp(power));
-          if (alpha < min_alpha) continue;
-          const float test_t = T[k] * (1 - alpha);
-          if (test_t < kMinTransmittance) {
-            done[k] = true;
-            --active;
-            continue;
-          }
-          const float wgt = alpha * T[k];
-          C[0][k] += wgt * p.rgb[0], C[1][k] += wgt * p.rgb[1], C[2][k] += wgt * p.rgb[2];
-          D[k] += wgt * p.z;
-          T[k] = test_t;
-          last[k] = int(j - s0) + 1;
-        }
+      const int px0 = std::max(0, int(std::floor(p.u - float(p.radius))) - x0), px1 = std::min(w - 1, int(std::ceil(p.u + float(p.radius))) - x0);
+      if (py0 > py1 || px0 > px1) continue;
+      blend_rows(st, ProjView{p.u, p.v, p.z, p.a, p.b, p.c, p.opacity, p.log_cut, p.rgb[0], p.rgb[1], p.rgb[2], p.radius}, x0, y0,
+                 px0, px1, py0, py1, float(j - s0 + 1), min_alpha);
+      if ((j - s0) % 32 == 31) {  // every pixel saturated: nothing behind can show
+        float open = 0;
+        for (int k = 0; k < kPix; ++k) open += st.inside[k] * (1 - st.done[k]);
+        if (open == 0) break;
       }
     }
     for (int ly = 0; ly < h; ++ly)
       for (int lx = 0; lx < w; ++lx) {
         const int k = ly * kTile + lx, x = x0 + lx, y = y0 + ly;
-        float c[3] = {C[0][k], C[1][k], C[2][k]};
+        float c[3] = {st.C0[k], st.C1[k], st.C2[k]};
         if (sky != nullptr) {
           const Eigen::Vector3f dir =
               (v.rotation * Eigen::Vector3f((float(x) - v.cx) / v.fx, (float(y) - v.cy) / v.fy, 1)).normalized();
           const Eigen::Vector3f b = sky->radiance(dir);
-          for (int ch = 0; ch < 3; ++ch) c[ch] += T[k] * b[ch];
+          for (int ch = 0; ch < 3; ++ch) c[ch] += st.T[k] * b[ch];
         }
         out.radiance.at<cv::Vec3f>(y, x) = {c[0], c[1], c[2]};
-        out.depth.at<float>(y, x) = D[k];
-        out.alpha.at<float>(y, x) = 1 - T[k];
-        final_t_.at<float>(y, x) = T[k];
-        n_contrib_.at<int>(y, x) = last[k];
+        out.depth.at<float>(y, x) = st.D[k];
+        out.alpha.at<float>(y, x) = 1 - st.T[k];
+        final_t_.at<float>(y, x) = st.T[k];
+        n_contrib_.at<int>(y, x) = int(st.last[k]);
       }
   }, threads);
   return out;
@@ -234,77 +334,42 @@ void Rasterizer::backward(const Gaussians& g, const SkyTexture* sky, const cv::M
     const int x0 = tx * kTile, y0 = ty * kTile;
     const int w = std::min(kTile, v.width - x0), h = std::min(kTile, v.height - y0);
     const uint32_t s0 = tile_start_[size_t(t)];
-    // Per pixel: the loss gradient, and the state walked back from the last contributor.
-    float G[3][kTile * kTile], GD[kTile * kTile], GA[kTile * kTile], T[kTile * kTile];
-    float acc_c[3][kTile * kTile], acc_d[kTile * kTile], acc_a[kTile * kTile];
-    int last[kTile * kTile];
+    BackState st;
     int max_last = 0;
-    for (int k = 0; k < kTile * kTile; ++k) last[k] = 0;
+    for (int k = 0; k < kPix; ++k) {
+      st.G0[k] = st.G1[k] = st.G2[k] = st.GD[k] = st.GA[k] = 0;
+      st.A0[k] = st.A1[k] = st.A2[k] = st.AD[k] = st.AA[k] = 0;
+      st.T[k] = 1, st.last[k] = 0;
+    }
     for (int ly = 0; ly < h; ++ly)
       for (int lx = 0; lx < w; ++lx) {
         const int k = ly * kTile + lx, x = x0 + lx, y = y0 + ly;
         const cv::Vec3f g = d_rad.at<cv::Vec3f>(y, x);
-        for (int c = 0; c < 3; ++c) G[c][k] = g[c], acc_c[c][k] = 0;
-        GD[k] = has_depth ? d_depth.at<float>(y, x) : 0.0f;
-        GA[k] = has_alpha ? d_alpha.at<float>(y, x) : 0.0f;
-        T[k] = final_t_.at<float>(y, x);
-        acc_d[k] = acc_a[k] = 0;
-        last[k] = n_contrib_.at<int>(y, x);
-        max_last = std::max(max_last, last[k]);
+        st.G0[k] = g[0], st.G1[k] = g[1], st.G2[k] = g[2];
+        st.GD[k] = has_depth ? d_depth.at<float>(y, x) : 0.0f;
+        st.GA[k] = has_alpha ? d_alpha.at<float>(y, x) : 0.0f;
+        st.T[k] = final_t_.at<float>(y, x);
+        st.last[k] = float(n_contrib_.at<int>(y, x));
+        max_last = std::max(max_last, n_contrib_.at<int>(y, x));
         if (sky != nullptr) {
           const Eigen::Vector3f dir =
               (v.rotation * Eigen::Vector3f((float(x) - v.cx) / v.fx, (float(y) - v.cy) / v.fy, 1)).normalized();
           const auto taps = sky->taps(dir);
           const Eigen::Vector3f b = sky->radiance(taps);
-          for (int c = 0; c < 3; ++c) acc_c[c][k] = b[c];
-          sky->backward(taps, Eigen::Vector3f(g[0], g[1], g[2]) * T[k], b, sky_part[size_t(wk)].data());
+          st.A0[k] = b[0], st.A1[k] = b[1], st.A2[k] = b[2];
+          sky->backward(taps, Eigen::Vector3f(g[0], g[1], g[2]) * st.T[k], b, sky_part[size_t(wk)].data());
         }
       }
     for (int j = max_last - 1; j >= 0; --j) {
       const uint32_t id = tile_ids_[s0 + uint32_t(j)];
       const Proj& p = proj_[id];
-      const int px0 = std::max(0, int(std::floor(p.u - float(p.radius))) - x0), px1 = std::min(w - 1, int(std::ceil(p.u + float(p.radius))) - x0);
       const int py0 = std::max(0, int(std::floor(p.v - float(p.radius))) - y0), py1 = std::min(h - 1, int(std::ceil(p.v + float(p.radius))) - y0);
-      float d[kPartial] = {0};
-      bool touched = false;
-      for (int ly = py0; ly <= py1; ++ly) {
-        const float dy = p.v - float(y0 + ly);
-        for (int lx = px0; lx <= px1; ++lx) {
-          const int k = ly * kTile + lx;
-          if (j >= last[k]) continue;
-          const float dx = p.u - float(x0 + lx);
-          const float power = -0.5f * (p.a * dx * dx + p.c * dy * dy) - p.b * dx * dy;
-          if (power > 0 || power < p.log_cut) continue;
-          const float g_exp = std::exp(power);
-          const float raw = p.opacity * g_exp;
-          const float alpha = std::min(kMaxAlpha, raw);
-          if (alpha < min_alpha) continue;
-          touched = true;
-          const float Tj = T[k] / (1 - alpha);
-          const float w_j = alpha * Tj;
-          float d_alpha_j = 0;
-          for (int c = 0; c < 3; ++c) {
-            d[c] += w_j * G[c][k];
-            d_alpha_j += (p.rgb[c] - acc_c[c][k]) * G[c][k];
-            acc_c[c][k] = alpha * p.rgb[c] + (1 - alpha) * acc_c[c][k];
-          }
-          d_alpha_j += (p.z - acc_d[k]) * GD[k] + (1 - acc_a[k]) * GA[k];
-          d[9] += w_j * GD[k];
-          acc_d[k] = alpha * p.z + (1 - alpha) * acc_d[k];
-          acc_a[k] = alpha + (1 - alpha) * acc_a[k];
-          d_alpha_j *= Tj;
-          T[k] = Tj;
-          if (raw >= kMaxAlpha) continue;  // clamped: flat in opacity and position
-          d[3] += d_alpha_j * g_exp;
-          const float d_power = d_alpha_j * raw;
-          d[4] += d_power * -(p.a * dx + p.b * dy);
-          d[5] += d_power * -(p.b * dx + p.c * dy);
-          d[6] += d_power * -0.5f * dx * dx;
-          d[7] += d_power * -dx * dy;
-          d[8] += d_power * -0.5f * dy * dy;
-        }
-      }
-      if (!touched) continue;
+      const int px0 = std::max(0, int(std::floor(p.u - float(p.radius))) - x0), px1 = std::min(w - 1, int(std::ceil(p.u + float(p.radius))) - x0);
+      if (py0 > py1 || px0 > px1) continue;
+      float d[kPartial];
+      if (!unblend_rows(st, ProjView{p.u, p.v, p.z, p.a, p.b, p.c, p.opacity, p.log_cut, p.rgb[0], p.rgb[1], p.rgb[2], p.radius}, x0, y0,
+                        px0, px1, py0, py1, float(j), min_alpha, d))
+        continue;
       float* pp = P + size_t(id) * kPartial;
       for (int k = 0; k < kPartial; ++k) pp[k] += d[k];
     }

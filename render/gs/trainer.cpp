@@ -1,6 +1,7 @@
 #include "render/gs/trainer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -39,6 +40,35 @@ struct TrainImage {
 };
 
 double oetf_slope(double x) { return x <= 0.0031308 ? 12.92 : 1.055 / 2.4 * std::pow(x, 1.0 / 2.4 - 1.0); }
+
+// The OETF and its slope on [0, 1] by table (the loss evaluates them for every pixel).
+class OetfTable {
+ public:
+  static constexpr int kSize = 8192;
+  OetfTable() {
+    for (int i = 0; i <= kSize; ++i) {
+      const double x = double(i) / kSize;
+      value_[size_t(i)] = srgb_oetf(float(x));
+      slope_[size_t(i)] = float(oetf_slope(std::max(x, 1e-6)));
+    }
+  }
+  // Linear interpolation of the value; the slope of the cell (exact derivative of that line).
+  void eval(double lin, double& value, double& slope) const {
+    if (lin >= 1) {
+      value = 1.0 + slope_[kSize] * (lin - 1);  // continued linearly above 1
+      slope = slope_[kSize];
+      return;
+    }
+    const double f = std::max(lin, 0.0) * kSize;
+    const int i = std::min(int(f), kSize - 1);
+    const double a = f - i;
+    value = value_[size_t(i)] * (1 - a) + value_[size_t(i) + 1] * a;
+    slope = lin <= 0 ? slope_[0] : (value_[size_t(i) + 1] - value_[size_t(i)]) * kSize;
+  }
+
+ private:
+  std::array<float, kSize + 1> value_, slope_;
+};
 
 // Adam over a flat parameter array with a learning rate per slot of a record.
 class Adam {
@@ -384,6 +414,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
     cv::Mat d_rad(out.radiance.size(), CV_32FC3);
     const double n = double(out.radiance.total()) * 3;
     double l1 = 0, se = 0, d_log_e = 0;
+    static const OetfTable oetf;
     for (int y = 0; y < out.radiance.rows; ++y)
       for (int x = 0; x < out.radiance.cols; ++x) {
         const cv::Vec3f r = out.radiance.at<cv::Vec3f>(y, x);
@@ -392,14 +423,14 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
         for (int c = 0; c < 3; ++c) {
           const double lin = e * r[c];
           // The OETF continued linearly above 1, so overexposure still has a gradient.
-          const double pred = lin <= 1 ? srgb_oetf(float(lin)) : 1.0 + oetf_slope(1.0) * (lin - 1);
+          double pred, slope;
+          oetf.eval(lin, pred, slope);
           const double target = t8[c] / 255.0;
           double diff = pred - target;
           if (t8[c] == 255 && diff > 0) diff = 0;  // saturated: anything brighter is right
           l1 += std::abs(diff);
           se += std::min(1.0, std::abs(diff)) * std::min(1.0, std::abs(diff));
           const double dpred = (diff > 0 ? 1.0 : (diff < 0 ? -1.0 : 0.0)) / n;
-          const double slope = oetf_slope(std::max(std::min(lin, 1.0), 1e-6));
           g[c] = float(dpred * slope * e);
           d_log_e += dpred * slope * lin;
         }

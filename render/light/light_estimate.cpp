@@ -70,58 +70,56 @@ struct ShadowCue {
   int boxes = 0;
 };
 
+// The ground region a box's shadow covers for a sun direction (beyond the box's own footprint),
+// as image polygons; false when the box is behind or too far from the camera.
+bool shadow_region(const LightView& v, const GroundBox& b, const Eigen::Vector3d& sun, cv::Mat& shadow, cv::Mat& blocked) {
+  const double ground = b.center.z() - b.size_lwh.z() / 2;
+  const auto corners = scene::box_corners(b.center, b.size_lwh, b.yaw);
+  std::vector<cv::Point> sh, body;
+  for (const auto& c : corners) {
+    const double h = c.z() - ground;
+    for (const Eigen::Vector3d& p : {Eigen::Vector3d(c - sun * (h / sun.z())), Eigen::Vector3d(c.x(), c.y(), ground)}) {
+      const auto pr = scene::project(v.camera, v.camera_to_world, Eigen::Vector3d(p.x(), p.y(), ground), 0.5);
+      if (!pr || pr->depth > 30) return false;
+      sh.emplace_back(int(std::lround(pr->pixel.x())), int(std::lround(pr->pixel.y())));
+    }
+    const auto pr = scene::project(v.camera, v.camera_to_world, c, 0.5);
+    if (!pr) return false;
+    body.emplace_back(int(std::lround(pr->pixel.x())), int(std::lround(pr->pixel.y())));
+  }
+  std::vector<cv::Point> hull_sh, hull_body;
+  cv::convexHull(sh, hull_sh);
+  cv::convexHull(body, hull_body);
+  if ((cv::boundingRect(hull_sh) & cv::Rect(0, 0, v.camera.width, v.camera.height)).area() < 50) return false;
+  shadow = cv::Mat(v.camera.height, v.camera.width, CV_8U, cv::Scalar(0));
+  blocked = shadow.clone();
+  cv::fillConvexPoly(shadow, hull_sh, 255);
+  cv::fillConvexPoly(blocked, hull_body, 255);
+  cv::dilate(blocked, blocked, cv::Mat(), cv::Point(-1, -1), 2);
+  return true;
+}
+
+// How much darker the ground is where boxes would cast their shadows for a sun direction than
+// where they would for the mirrored sun (same distance from the box, other side): the light
+// the box itself hides from the sky cancels out, the sun's shadow does not.
 ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::Mat>& gray, const std::vector<GroundBox>& boxes,
                      const Eigen::Vector3d& sun) {
   ShadowCue cue;
   if (sun.z() < 0.08) return cue;
+  const Eigen::Vector3d mirror(-sun.x(), -sun.y(), sun.z());
   std::vector<double> logs, ratios;
-  for (const auto& b : boxes) {
-    const double ground = b.center.z() - b.size_lwh.z() / 2;
-    const auto corners = scene::box_corners(b.center, b.size_lwh, b.yaw);
-    std::vector<Eigen::Vector3d> shadow_pts, foot_pts;
-    for (const auto& c : corners) {
-      const double h = c.z() - ground;
-      const Eigen::Vector3d g = c - sun * (h / sun.z());
-      shadow_pts.emplace_back(g.x(), g.y(), ground);
-      foot_pts.emplace_back(c.x(), c.y(), ground);
-    }
+  for (const auto& b : boxes)
     for (size_t vi = 0; vi < views.size(); ++vi) {
-      const auto& v = views[vi];
-      auto to_image = [&](const std::vector<Eigen::Vector3d>& pts, std::vector<cv::Point>& out) {
-        out.clear();
-        for (const auto& p : pts) {
-          const auto pr = scene::project(v.camera, v.camera_to_world, p, 0.5);
-          if (!pr || pr->depth > 30) return false;
-          out.emplace_back(int(std::lround(pr->pixel.x())), int(std::lround(pr->pixel.y())));
-        }
-        return true;
-      };
-      std::vector<cv::Point> sh, ft, body;
-      std::vector<Eigen::Vector3d> all(corners.begin(), corners.end());
-      if (!to_image(shadow_pts, sh) || !to_image(foot_pts, ft) || !to_image(all, body)) continue;
-      std::vector<cv::Point> hull_sh, hull_ft, hull_body;
-      std::vector<cv::Point> sh_all = sh;
-      sh_all.insert(sh_all.end(), ft.begin(), ft.end());
-      cv::convexHull(sh_all, hull_sh);
-      cv::convexHull(ft, hull_ft);
-      cv::convexHull(body, hull_body);
-      const cv::Rect area = cv::boundingRect(hull_sh) & cv::Rect(0, 0, v.camera.width, v.camera.height);
-      if (area.area() < 50) continue;
-      cv::Mat shadow(v.camera.height, v.camera.width, CV_8U, cv::Scalar(0)), blocked = shadow.clone();
-      cv::fillConvexPoly(shadow, hull_sh, 255);
-      cv::fillConvexPoly(blocked, hull_body, 255);
-      cv::fillConvexPoly(blocked, hull_ft, 255);
-      cv::dilate(blocked, blocked, cv::Mat(), cv::Point(-1, -1), 2);
-      cv::Mat ring;
-      cv::dilate(shadow, ring, cv::Mat(), cv::Point(-1, -1), std::max(4, int(std::sqrt(area.area()) / 6)));
-      ring.setTo(0, shadow);
-      ring.setTo(0, blocked);
-      shadow.setTo(0, blocked);
+      cv::Mat shadow, blocked, lit, blocked2;
+      if (!shadow_region(views[vi], b, sun, shadow, blocked) || !shadow_region(views[vi], b, mirror, lit, blocked2)) continue;
+      cv::Mat overlap = shadow & lit;
+      shadow.setTo(0, blocked | overlap);
+      lit.setTo(0, blocked | overlap);
       std::vector<float> in, out;
       for (int y = 0; y < shadow.rows; ++y)
         for (int x = 0; x < shadow.cols; ++x) {
           if (shadow.at<uchar>(y, x)) in.push_back(gray[vi].at<float>(y, x));
-          else if (ring.at<uchar>(y, x)) out.push_back(gray[vi].at<float>(y, x));
+          else if (lit.at<uchar>(y, x)) out.push_back(gray[vi].at<float>(y, x));
         }
       if (in.size() < 30 || out.size() < 30) continue;
       std::nth_element(in.begin(), in.begin() + long(in.size() / 2), in.end());
@@ -130,7 +128,6 @@ ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::
       logs.push_back(std::log(std::max(r, 1e-3)));
       ratios.push_back(r);
     }
-  }
   if (logs.empty()) return cue;
   cue.boxes = int(logs.size());
   for (double l : logs) cue.score += l;

@@ -1,0 +1,112 @@
+// chatsim light estimate / eval light: the sky dome and sun from a scene's images, and its
+// accuracy on HDR panoramas.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/util/exit_codes.hpp"
+#include "processes/cli/commands.hpp"
+#include "render/light/light_estimate.hpp"
+#include "render/light/light_eval.hpp"
+
+namespace chatsim::cli {
+namespace {
+namespace fs = std::filesystem;
+
+struct EstimateArgs {
+  std::string scene, out = "sky.exr";
+  int frame = 0;
+};
+
+int run_estimate(const EstimateArgs& a) {
+  try {
+    const auto s = scene::load_scene(a.scene);
+    const auto views = render::light::scene_light_views(s, a.frame);
+    if (views.empty()) {
+      std::cerr << "error: " << a.scene << ": no images at frame " << a.frame << " (chatsim scene info lists the frames)\n";
+      return exit_code::kUsage;
+    }
+    const auto est = render::light::estimate_light(views, render::light::scene_ground_boxes(s, a.frame));
+    est.dome().write_exr(a.out);
+    std::cout << est.to_json(fs::path(a.out).filename().string()).dump(1) << "\n";
+    return exit_code::kOk;
+  } catch (const scene::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_code::kUsage;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_code::kFailure;
+  }
+}
+
+struct EvalLightArgs {
+  std::vector<std::string> hdri;
+  int headings = 8, width = 480;
+  std::string out;
+};
+
+int run_eval_light(const EvalLightArgs& a) {
+  nlohmann::json all = nlohmann::json::array();
+  std::vector<double> angles, logs;
+  for (const auto& file : a.hdri) {
+    try {
+      const auto pano = render::EnvMap::read(file);
+      auto r = render::light::evaluate_on_panorama(pano, fs::path(file).filename().string(), a.headings, a.width);
+      std::cerr << r["panorama"].get<std::string>() << ": median peak error " << r["median_angular_error_deg"].get<double>()
+                << " deg, median log10 intensity error " << r["median_log10_intensity_error"].get<double>() << "\n";
+      for (const auto& h : r["headings"]) {
+        angles.push_back(h["peak_angular_error_deg"]);
+        logs.push_back(h["log10_intensity_error"]);
+      }
+      all.push_back(r);
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return exit_code::kUsage;
+    }
+  }
+  auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const nlohmann::json report{{"panoramas", all},
+                              {"median_angular_error_deg", median(angles)},
+                              {"median_log10_intensity_error", median(logs)},
+                              {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
+  if (!a.out.empty()) {
+    if (fs::path(a.out).has_parent_path()) fs::create_directories(fs::path(a.out).parent_path());
+    std::ofstream(a.out) << report.dump(1) << "\n";
+  }
+  std::cout << report.dump(1) << "\n";
+  return exit_code::kOk;
+}
+
+}  // namespace
+
+void add_light_command(CLI::App& app, int& result) {
+  auto* light = app.add_subcommand("light", "Lighting: estimate the sky dome and sun of a scene's frame");
+  light->require_subcommand(1);
+  auto ea = std::make_shared<EstimateArgs>();
+  auto* est = light->add_subcommand("estimate", "Estimate an HDR sky dome (EXR) and the sun from one frame's images; "
+                                                "prints the lighting JSON of SCENE_FORMAT.md");
+  est->add_option("--scene", ea->scene, "scene directory")->required();
+  est->add_option("--frame", ea->frame, "frame index");
+  est->add_option("--out", ea->out, "sky dome EXR to write");
+  est->callback([ea, &result] { result = run_estimate(*ea); });
+}
+
+void add_eval_light_command(CLI::App& eval, int& result) {
+  auto a = std::make_shared<EvalLightArgs>();
+  auto* cmd = eval.add_subcommand("light", "Lighting estimation on HDR panoramas: the car's three front cameras see LDR "
+                                           "crops at several headings; peak angular error (deg) and log10 peak "
+                                           "intensity error against the panorama's own peak");
+  cmd->add_option("--hdri", a->hdri, "equirect panoramas (.exr or .hdr), z up")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--headings", a->headings, "headings per panorama")->check(CLI::Range(1, 64));
+  cmd->add_option("--width", a->width, "crop width in pixels")->check(CLI::Range(64, 4096));
+  cmd->add_option("--out", a->out, "also write the JSON report here");
+  cmd->callback([a, &result] { result = run_eval_light(*a); });
+}
+
+}  // namespace chatsim::cli

@@ -1,0 +1,142 @@
+#include "render/light/light_eval.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+#include "render/color.hpp"
+#include "render/equirect.hpp"
+#include "render/light/light_estimate.hpp"
+#include "render/sampling.hpp"
+
+namespace chatsim::render::light {
+namespace {
+
+constexpr double kCapDeg = 5, kRingDeg = 10;
+
+double cap_excess(const std::function<float(const Eigen::Vector3f&)>& lum, const Eigen::Vector3f& peak) {
+  // Numerical integral over the 10-degree disc around the peak on a polar grid.
+  const Frame f(peak);
+  std::vector<float> ring;
+  double cap = 0;
+  const int nr = 40, nphi = 64;
+  std::vector<std::pair<float, double>> cap_samples;
+  for (int i = 0; i < nr; ++i) {
+    const double theta = (i + 0.5) / nr * kRingDeg * M_PI / 180;
+    const double d_omega = std::sin(theta) * (kRingDeg * M_PI / 180 / nr) * (2 * M_PI / nphi);
+    for (int k = 0; k < nphi; ++k) {
+      const double phi = 2 * M_PI * (k + 0.5) / nphi;
+      const Eigen::Vector3f d = f.to_world(Eigen::Vector3f(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                                                           float(std::cos(theta))));
+      const float l = lum(d);
+      if (theta < kCapDeg * M_PI / 180) cap_samples.emplace_back(l, d_omega);
+      else ring.push_back(l);
+    }
+  }
+  std::nth_element(ring.begin(), ring.begin() + long(ring.size() / 2), ring.end());
+  const double level = ring[ring.size() / 2];
+  for (const auto& [l, w] : cap_samples) cap += std::max(0.0, double(l) - level) * w;
+  return cap;
+}
+
+}  // namespace
+
+PanoramaPeak panorama_peak(const EnvMap& pano) {
+  cv::Mat lum(pano.height(), pano.width(), CV_32F);
+  for (int y = 0; y < pano.height(); ++y)
+    for (int x = 0; x < pano.width(); ++x) lum.at<float>(y, x) = luminance(pano.at(x, y));
+  cv::GaussianBlur(lum, lum, cv::Size(0, 0), 1.5);
+  cv::Point at;
+  cv::minMaxLoc(lum, nullptr, nullptr, nullptr, &at);
+  PanoramaPeak p;
+  p.direction = equirect_dir((at.x + 0.5f) / float(pano.width()), (at.y + 0.5f) / float(pano.height()));
+  p.irradiance = cap_excess([&](const Eigen::Vector3f& d) { return luminance(pano.radiance(d)); }, p.direction);
+  return p;
+}
+
+nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name, int headings, int width) {
+  const PanoramaPeak truth = panorama_peak(pano);
+  nlohmann::json results = nlohmann::json::array();
+  std::vector<double> angles, logs, seconds;
+  int sunny = 0;
+  for (int h = 0; h < headings; ++h) {
+    const double heading = 2 * M_PI * h / headings;
+    std::vector<LightView> views;
+    // Auto exposure over the three crops: the median radiance to a mid-grey, as a camera would.
+    std::vector<float> lum_all;
+    std::vector<cv::Mat> radiance;
+    for (double yaw_deg : {0.0, 40.0, -40.0}) {
+      LightView v;
+      v.camera.name = "cam";
+      v.camera.width = width;
+      v.camera.height = width * 2 / 3;
+      v.camera.fx = v.camera.fy = width / 2.0 / std::tan(25 * M_PI / 180);
+      v.camera.cx = (width - 1) / 2.0;
+      v.camera.cy = (v.camera.height - 1) / 2.0;
+      const double yaw = heading + yaw_deg * M_PI / 180;
+      Eigen::Matrix3d cv_in_flu;
+      cv_in_flu << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+      v.camera_to_world = Eigen::Isometry3d::Identity();
+      v.camera_to_world.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * cv_in_flu;
+      v.camera_to_world.translation() = Eigen::Vector3d(0, 0, 1.6);
+      cv::Mat rad(v.camera.height, v.camera.width, CV_32FC3);
+      for (int y = 0; y < rad.rows; ++y)
+        for (int x = 0; x < rad.cols; ++x) {
+          const Eigen::Vector3d d = v.camera_to_world.linear() * Eigen::Vector3d((x - v.camera.cx) / v.camera.fx, (y - v.camera.cy) / v.camera.fy, 1);
+          const Rgb c = pano.radiance(d.normalized().cast<float>());
+          rad.at<cv::Vec3f>(y, x) = {c.x(), c.y(), c.z()};
+          if ((x + y) % 7 == 0) lum_all.push_back(luminance(c));
+        }
+      radiance.push_back(rad);
+      views.push_back(v);
+    }
+    std::nth_element(lum_all.begin(), lum_all.begin() + long(lum_all.size() / 2), lum_all.end());
+    const double exposure = 0.15 / std::max(double(lum_all[lum_all.size() / 2]), 1e-9);
+    for (size_t k = 0; k < views.size(); ++k) {
+      cv::Mat rgb(radiance[k].rows, radiance[k].cols, CV_8UC3);
+      for (int y = 0; y < rgb.rows; ++y)
+        for (int x = 0; x < rgb.cols; ++x)
+          for (int c = 0; c < 3; ++c)
+            rgb.at<cv::Vec3b>(y, x)[c] = uchar(std::lround(srgb_oetf(float(radiance[k].at<cv::Vec3f>(y, x)[c] * exposure)) * 255));
+      views[k].rgb = rgb;
+      views[k].exposure = exposure;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const LightEstimate est = estimate_light(views);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    Eigen::Vector3f dir;
+    double intensity;
+    if (est.sunny) {
+      dir = est.sky.sun_direction.normalized();
+      intensity = luminance(est.sun_radiance) * sun_solid_angle_sr();
+    } else {
+      const EnvMap dome = est.dome(256, 128);
+      dir = panorama_peak(dome).direction;
+      intensity = panorama_peak(dome).irradiance;
+    }
+    const double angle = std::acos(std::clamp(double(dir.dot(truth.direction)), -1.0, 1.0)) * 180 / M_PI;
+    const double log_err = std::abs(std::log10(std::max(intensity, 1e-12) / std::max(truth.irradiance, 1e-12)));
+    angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
+    sunny += est.sunny ? 1 : 0;
+    results.push_back({{"heading_deg", heading * 180 / M_PI}, {"sky_type", est.sunny ? "sunny" : "overcast"},
+                       {"sun_cue", est.sun_cue}, {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
+                       {"seconds", secs}});
+  }
+  auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  return {{"panorama", name},
+          {"peak_direction", {truth.direction.x(), truth.direction.y(), truth.direction.z()}},
+          {"peak_elevation_deg", std::asin(std::clamp(double(truth.direction.z()), -1.0, 1.0)) * 180 / M_PI},
+          {"peak_irradiance", truth.irradiance},
+          {"median_angular_error_deg", median(angles)},
+          {"median_log10_intensity_error", median(logs)},
+          {"median_seconds", median(seconds)},
+          {"estimated_sunny", sunny},
+          {"headings", results}};
+}
+
+}  // namespace chatsim::render::light
