@@ -19,5 +19,6 @@ void add_radiance_commands(CLI::App& app, int& result);  // train, render
 void add_eval_nvs_command(CLI::App& eval, int& result);
 void add_light_command(CLI::App& app, int& result);
 void add_eval_light_command(CLI::App& eval, int& result);
+void add_eval_deletion_command(CLI::App& eval, int& result);
 
 }  // namespace chatsim::cli

@@ -166,6 +166,7 @@ void add_eval_command(CLI::App& app, int& result) {
   eval->require_subcommand(1);
   add_eval_nvs_command(*eval, result);
   add_eval_light_command(*eval, result);
+  add_eval_deletion_command(*eval, result);
   auto args = std::make_shared<EvalArgs>();
   auto* cmd = eval->add_subcommand(
       "commands", "Grade the decision pipeline on command cases (../shared/data/commands/README.md format): accuracy "

@@ -391,8 +391,8 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
   std::vector<size_t> order(images.size());
   std::iota(order.begin(), order.end(), 0);
   size_t next = order.size();
-  double loss_ema = 0, psnr_sum = 0;
-  int psnr_n = 0;
+  double loss_ema = 0;
+  std::vector<double> recent_psnr;  // the last 100 iterations'
   std::vector<double> window_losses;
   const int densify_from = iterations / 10, densify_until = iterations * 6 / 10, densify_every = std::max(50, iterations / 20);
   int it = 0;
@@ -438,7 +438,8 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
     l1 /= n;
     const double psnr = 10 * std::log10(1.0 / std::max(se / n, 1e-10));
     loss_ema = it == 1 ? l1 : 0.98 * loss_ema + 0.02 * l1;
-    if (it > iterations - 100) psnr_sum += psnr, ++psnr_n;
+    recent_psnr.push_back(psnr);
+    if (recent_psnr.size() > 100) recent_psnr.erase(recent_psnr.begin());
     GsGrads grads;
     grads.reset(placed.size(), size_t(model.sky.width() * model.sky.height()));
     raster.backward(placed, &model.sky, d_rad, cv::Mat(), cv::Mat(), grads);
@@ -586,7 +587,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
   }
   report.iterations = std::min(it, iterations);
   report.final_loss = loss_ema;
-  report.train_psnr = psnr_n > 0 ? psnr_sum / psnr_n : 0;
+  report.train_psnr = recent_psnr.empty() ? 0 : std::accumulate(recent_psnr.begin(), recent_psnr.end(), 0.0) / double(recent_psnr.size());
   report.gaussians = model.gaussians.size();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   model.info = {{"scene", s.name},

@@ -1,0 +1,297 @@
+#include "render/inpaint/deletion.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/photo.hpp>
+
+#include "common/scene/camera_model.hpp"
+#include "common/scene/objects.hpp"
+#include "render/gs/model.hpp"
+#include "render/image_io.hpp"
+#include "render/inpaint/exemplar_inpaint.hpp"
+
+namespace chatsim::render::inpaint {
+namespace {
+
+// The ground polygon an object's box and shadow can darken: footprint, padded, stretched away
+// from the sun.
+std::vector<Eigen::Vector3d> ground_outline(const scene::TrackPoint& p, const Eigen::Vector3d& size, const DeletionOptions& o) {
+  std::vector<Eigen::Vector3d> pts;
+  const double ground = p.center.z() - size.z() / 2;
+  const Eigen::Vector3d pad(size.x() + 2 * o.margin_m, size.y() + 2 * o.margin_m, size.z());
+  for (const auto& c : scene::box_corners(p.center, pad, p.yaw)) pts.emplace_back(c.x(), c.y(), ground);
+  if (o.sun_direction && o.sun_direction->z() > 0.1) {
+    const Eigen::Vector3d s = o.sun_direction->normalized();
+    for (const auto& c : scene::box_corners(p.center, size, p.yaw)) {
+      const Eigen::Vector3d g = c - s * ((c.z() - ground) / s.z());
+      pts.emplace_back(g.x(), g.y(), ground);
+    }
+  }
+  return pts;
+}
+
+std::optional<scene::TrackPoint> at_time(const scene::Scene& s, const scene::ObjectTrack& o, double t) {
+  const auto pose = gs::object_pose(s, o, t);
+  if (!pose) return std::nullopt;
+  scene::TrackPoint p;
+  p.center = pose->translation();
+  p.yaw = std::atan2(pose->linear()(1, 0), pose->linear()(0, 0));
+  return p;
+}
+
+// Fills the image area of the convex hull of world points, clipped at the camera's near plane
+// (a box beside the car reaches behind the camera: only what is in front shows).
+void fill_projected(cv::Mat& mask, const DeletionImage& im, const std::vector<Eigen::Vector3d>& pts, int pad) {
+  constexpr double kNear = 0.1;
+  std::vector<Eigen::Vector3d> cam;
+  for (const auto& w : pts) cam.push_back(im.pose.inverse() * w);
+  std::vector<Eigen::Vector3d> front;
+  for (const auto& c : cam)
+    if (c.z() >= kNear) front.push_back(c);
+  if (front.empty()) return;
+  if (front.size() < cam.size())
+    for (size_t a = 0; a < cam.size(); ++a)
+      for (size_t b = a + 1; b < cam.size(); ++b)
+        if ((cam[a].z() < kNear) != (cam[b].z() < kNear)) {
+          const double t = (kNear - cam[a].z()) / (cam[b].z() - cam[a].z());
+          front.push_back(cam[a] + t * (cam[b] - cam[a]));
+        }
+  std::vector<cv::Point2f> px;
+  for (const auto& c : front) {
+    // Far outside the image the hull is the same with clamped points; keeps integers sane.
+    const double u = std::clamp(im.cam.fx * c.x() / c.z() + im.cam.cx, -1e5, 1e5);
+    const double v = std::clamp(im.cam.fy * c.y() / c.z() + im.cam.cy, -1e5, 1e5);
+    px.emplace_back(float(u), float(v));
+  }
+  std::vector<cv::Point2f> hull_f;
+  cv::convexHull(px, hull_f);
+  std::vector<cv::Point> hull;
+  for (const auto& p : hull_f) hull.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
+  cv::Mat m(mask.size(), CV_8U, cv::Scalar(0));
+  cv::fillConvexPoly(m, hull, 255);
+  if (pad > 0) cv::dilate(m, m, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * pad + 1, 2 * pad + 1)));
+  mask |= m;
+}
+
+cv::Vec3f bilinear(const cv::Mat& img, double x, double y) {
+  const int x0 = std::clamp(int(std::floor(x)), 0, img.cols - 1), y0 = std::clamp(int(std::floor(y)), 0, img.rows - 1);
+  const int x1 = std::min(x0 + 1, img.cols - 1), y1 = std::min(y0 + 1, img.rows - 1);
+  const float ax = float(std::clamp(x - x0, 0.0, 1.0)), ay = float(std::clamp(y - y0, 0.0, 1.0));
+  return (img.at<cv::Vec3f>(y0, x0) * (1 - ax) + img.at<cv::Vec3f>(y0, x1) * ax) * (1 - ay) +
+         (img.at<cv::Vec3f>(y1, x0) * (1 - ax) + img.at<cv::Vec3f>(y1, x1) * ax) * ay;
+}
+
+// The ground map of one object: world rectangle, cells, what was seen.
+struct GroundMap {
+  double x0 = 0, y0 = 0, res = 0.04, z = 0;
+  cv::Mat radiance;  // CV_32FC3
+  cv::Mat seen;      // CV_8UC1
+  bool contains(double x, double y) const {
+    const double u = (x - x0) / res, v = (y - y0) / res;
+    return u >= 0 && v >= 0 && u < radiance.cols - 1 && v < radiance.rows - 1;
+  }
+};
+
+}  // namespace
+
+cv::Mat deletion_mask(const scene::Scene& s, const DeletionImage& im, const std::vector<std::string>& ids, const DeletionOptions& o) {
+  cv::Mat mask(im.cam.height, im.cam.width, CV_8U, cv::Scalar(0));
+  for (const auto& id : ids) {
+    const auto* obj = s.object(id);
+    if (obj == nullptr) continue;
+    const auto p = at_time(s, *obj, im.time);
+    if (!p) continue;
+    std::vector<Eigen::Vector3d> pts;
+    for (const auto& c : scene::box_corners(p->center, obj->size_lwh, p->yaw)) pts.push_back(c);
+    const auto g = ground_outline(*p, obj->size_lwh, o);
+    fill_projected(mask, im, pts, o.box_pad_px);
+    fill_projected(mask, im, g, 0);
+  }
+  return mask;
+}
+
+DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::string>& ids, std::vector<DeletionImage>& targets,
+                             const std::vector<DeletionImage>& sources, const DeletionOptions& o, const BackgroundRenderer& background) {
+  const auto t0 = std::chrono::steady_clock::now();
+  DeletionStats stats;
+  // Where every labelled object hides the ground in each source image (no view of the ground
+  // through a car); the deleted ones also with their shadows.
+  std::vector<std::string> all_ids;
+  for (const auto& obj : s.objects) all_ids.push_back(obj.id);
+  std::vector<cv::Mat> occluded(sources.size());
+  for (size_t i = 0; i < sources.size(); ++i) {
+    DeletionOptions tight = o;
+    tight.margin_m = 0.2;
+    tight.sun_direction.reset();
+    occluded[i] = deletion_mask(s, sources[i], all_ids, tight) | deletion_mask(s, sources[i], ids, o);
+  }
+  // One ground map per deleted object, over its whole track.
+  std::vector<GroundMap> maps;
+  double seen_cells = 0, all_cells = 0;
+  for (const auto& id : ids) {
+    const auto* obj = s.object(id);
+    if (obj == nullptr || obj->track.empty()) continue;
+    double xmin = 1e18, ymin = 1e18, xmax = -1e18, ymax = -1e18, zmin = 1e18;
+    for (const auto& tp : obj->track)
+      for (const auto& c : ground_outline(tp, obj->size_lwh, o)) {
+        xmin = std::min(xmin, c.x()), xmax = std::max(xmax, c.x()), ymin = std::min(ymin, c.y()), ymax = std::max(ymax, c.y());
+        zmin = std::min(zmin, c.z());
+      }
+    GroundMap gm;
+    gm.res = std::max(o.bev_resolution_m, std::sqrt((xmax - xmin) * (ymax - ymin) / 2.0e6));  // at most ~2M cells
+    gm.x0 = xmin, gm.y0 = ymin, gm.z = zmin;
+    const int w = std::max(2, int(std::ceil((xmax - xmin) / gm.res))), h = std::max(2, int(std::ceil((ymax - ymin) / gm.res)));
+    gm.radiance = cv::Mat(h, w, CV_32FC3, cv::Scalar::all(0));
+    gm.seen = cv::Mat(h, w, CV_8U, cv::Scalar(0));
+    std::vector<std::vector<std::pair<float, cv::Vec3f>>> samples(size_t(w) * size_t(h));
+    for (size_t i = 0; i < sources.size(); ++i) {
+      const DeletionImage& im = sources[i];
+      const Eigen::Isometry3d w2c = im.pose.inverse();
+      for (int v = 0; v < h; ++v)
+        for (int u = 0; u < w; ++u) {
+          const Eigen::Vector3d p(gm.x0 + (u + 0.5) * gm.res, gm.y0 + (v + 0.5) * gm.res, gm.z);
+          const Eigen::Vector3d c = w2c * p;
+          if (c.z() < 0.5 || c.z() > 40) continue;
+          const double px = im.cam.fx * c.x() / c.z() + im.cam.cx, py = im.cam.fy * c.y() / c.z() + im.cam.cy;
+          if (px < 0 || py < 0 || px > im.cam.width - 1 || py > im.cam.height - 1) continue;
+          if (occluded[i].at<uchar>(int(py + 0.5), int(px + 0.5))) continue;
+          // Nearer views resolve the ground better: weight by inverse squared distance.
+          samples[size_t(v) * size_t(w) + size_t(u)].emplace_back(float(1.0 / (c.squaredNorm())), bilinear(im.radiance, px, py));
+        }
+    }
+    for (int v = 0; v < h; ++v)
+      for (int u = 0; u < w; ++u) {
+        auto& sm = samples[size_t(v) * size_t(w) + size_t(u)];
+        if (sm.empty()) continue;
+        // Robust: the weighted mean of the samples near the median brightness.
+        std::vector<float> lum;
+        for (const auto& [wt, c] : sm) lum.push_back(c[0] + c[1] + c[2]);
+        std::nth_element(lum.begin(), lum.begin() + long(lum.size() / 2), lum.end());
+        const float med = lum[lum.size() / 2];
+        cv::Vec3f acc(0, 0, 0);
+        float wsum = 0;
+        for (const auto& [wt, c] : sm) {
+          const float l = c[0] + c[1] + c[2];
+          if (std::abs(l - med) > 0.25f * med + 1e-6f) continue;
+          acc += c * wt;
+          wsum += wt;
+        }
+        if (wsum <= 0) continue;
+        gm.radiance.at<cv::Vec3f>(v, u) = acc / wsum;
+        gm.seen.at<uchar>(v, u) = 255;
+      }
+    seen_cells += cv::countNonZero(gm.seen);
+    all_cells += double(w) * h;
+    // What nobody saw: exemplar fill in the bird's-eye view.
+    const cv::Mat hole = gm.seen == 0;
+    if (cv::countNonZero(hole) > 0 && cv::countNonZero(gm.seen) > 0) {
+      // Matching in sqrt space weighs dark asphalt and bright markings more evenly.
+      cv::Mat root;
+      cv::sqrt(gm.radiance, root);
+      root = exemplar_inpaint(root, hole, {9, 60});
+      gm.radiance = root.mul(root);
+    }
+    maps.push_back(gm);
+  }
+  stats.ground_seen = all_cells > 0 ? seen_cells / all_cells : 0;
+  // Write back.
+  for (auto& im : targets) {
+    cv::Mat mask(im.cam.height, im.cam.width, CV_8U, cv::Scalar(0));
+    cv::Mat owner(im.cam.height, im.cam.width, CV_32S, cv::Scalar(-1));
+    for (size_t k = 0, m = 0; k < ids.size(); ++k) {
+      const auto* obj = s.object(ids[k]);
+      if (obj == nullptr || obj->track.empty()) continue;
+      const cv::Mat mk = deletion_mask(s, im, {ids[k]}, o);
+      owner.setTo(int(m), mk & (owner < 0));
+      mask |= mk;
+      ++m;
+    }
+    if (cv::countNonZero(mask) == 0) continue;
+    ++stats.images_edited;
+    cv::Mat filled = im.radiance.clone();
+    cv::Mat fallback(mask.size(), CV_8U, cv::Scalar(0));
+    const Eigen::Matrix3d R = im.pose.linear();
+    const Eigen::Vector3d C = im.pose.translation();
+    for (int y = 0; y < mask.rows; ++y)
+      for (int x = 0; x < mask.cols; ++x) {
+        if (!mask.at<uchar>(y, x)) continue;
+        const int k = owner.at<int>(y, x);
+        bool done = false;
+        if (k >= 0 && size_t(k) < maps.size()) {
+          const GroundMap& gm = maps[size_t(k)];
+          const Eigen::Vector3d d = R * Eigen::Vector3d((x - im.cam.cx) / im.cam.fx, (y - im.cam.cy) / im.cam.fy, 1);
+          if (d.z() < -1e-6) {
+            const double t = (gm.z - C.z()) / d.z();
+            const Eigen::Vector3d p = C + t * d;
+            if (gm.contains(p.x(), p.y())) {
+              filled.at<cv::Vec3f>(y, x) = bilinear(gm.radiance, (p.x() - gm.x0) / gm.res - 0.5, (p.y() - gm.y0) / gm.res - 0.5);
+              done = true;
+            }
+          }
+        }
+        if (!done) fallback.at<uchar>(y, x) = 255;
+      }
+    stats.fallback_pixels += cv::countNonZero(fallback);
+    if (cv::countNonZero(fallback) > 0) {
+      cv::Mat bg = background ? background(im, ids) : cv::Mat();
+      if (!bg.empty()) {
+        bg.copyTo(filled, fallback);
+      } else {
+        // 2D inpainting around the pixels no map covers, from everything not masked.
+        cv::Rect roi = cv::boundingRect(fallback);
+        roi = cv::Rect(roi.x - 24, roi.y - 24, roi.width + 48, roi.height + 48) & cv::Rect(0, 0, mask.cols, mask.rows);
+        cv::Mat hole = fallback(roi).clone();
+        // Known pixels: not masked at all, or already filled from a ground map.
+        cv::Mat root;
+        cv::sqrt(cv::max(filled(roi), 0.0), root);
+        const cv::Mat out = exemplar_inpaint(root, hole, {7, 40});
+        cv::Mat sq = out.mul(out);
+        sq.copyTo(filled(roi), hole);
+      }
+    }
+    // Feathered seam: blend over a few pixels outside the mask.
+    cv::Mat alpha;
+    mask.convertTo(alpha, CV_32F, 1.0 / 255);
+    if (o.feather_px > 0) {
+      cv::Mat grown;
+      cv::dilate(mask, grown, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * o.feather_px + 1, 2 * o.feather_px + 1)));
+      cv::GaussianBlur(alpha, alpha, cv::Size(0, 0), o.feather_px / 2.0 + 0.5);
+      alpha.setTo(1, mask);
+      alpha.setTo(0, grown == 0);
+    }
+    for (int y = 0; y < mask.rows; ++y)
+      for (int x = 0; x < mask.cols; ++x) {
+        const float a = alpha.at<float>(y, x);
+        if (a <= 0) continue;
+        // Outside the mask the fill is the original itself, except where 2D inpainting
+        // extended it: blend toward the filled value only where it exists.
+        im.radiance.at<cv::Vec3f>(y, x) = im.radiance.at<cv::Vec3f>(y, x) * (1 - a) + filled.at<cv::Vec3f>(y, x) * a;
+      }
+  }
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return stats;
+}
+
+std::vector<DeletionImage> scene_images(const scene::Scene& s) {
+  std::vector<DeletionImage> out;
+  for (const auto& f : s.frames)
+    for (const auto& [name, ref] : f.images) {
+      const auto* cam = s.camera(name);
+      if (cam == nullptr) continue;
+      DeletionImage im;
+      im.frame = f.index;
+      im.camera = name;
+      im.cam = *cam;
+      im.pose = s.camera_to_world(f, *cam);
+      im.time = ref.timestamp_s;
+      im.exposure = ref.exposure_s.value_or(1.0);
+      im.radiance = decode_srgb8(read_rgb8(s.dir / ref.path)) / im.exposure;
+      out.push_back(std::move(im));
+    }
+  return out;
+}
+
+}  // namespace chatsim::render::inpaint

@@ -1,0 +1,63 @@
+#pragma once
+// Removing labelled objects from a scene's images. The ground an object covered is seen, in
+// other frames and cameras, where the object was not in the way: those views are gathered into
+// a bird's-eye map of the ground around the object's track (in radiance units, so differently
+// exposed cameras agree), what no view saw is filled there by exemplar inpainting (lane
+// markings and kerbs continue straight in that view), and every image takes its fill from the
+// one map, so the fill cannot flicker from frame to frame. Pixels whose rays do not end on that
+// ground (what stood behind the object) come from a renderer without the object when one is
+// given, else from 2D inpainting; the seam is feathered.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "common/scene/scene.hpp"
+
+namespace chatsim::render::inpaint {
+
+struct DeletionImage {
+  int frame = 0;
+  std::string camera;
+  scene::Camera cam;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  double time = 0;
+  double exposure = 1;
+  cv::Mat radiance;      // CV_32FC3, linear scene radiance (pixel linear value / exposure)
+};
+
+struct DeletionOptions {
+  double bev_resolution_m = 0.04;
+  double margin_m = 0.8;                         // ground around each footprint that may hold its shadow
+  std::optional<Eigen::Vector3d> sun_direction;  // to follow the shadow (world, toward the sun)
+  int feather_px = 3;
+  int box_pad_px = 4;
+};
+
+// Renders an image's view without the deleted objects (the radiance field); may be empty.
+using BackgroundRenderer = std::function<cv::Mat(const DeletionImage&, const std::vector<std::string>& hidden)>;
+
+struct DeletionStats {
+  int images_edited = 0;
+  double ground_seen = 0;        // share of the ground map some view saw
+  double seconds = 0;
+  int fallback_pixels = 0;       // pixels not on the ground map
+};
+
+// Where the objects (boxes and their shadows, padded) cover an image: CV_8UC1.
+cv::Mat deletion_mask(const scene::Scene& scene, const DeletionImage& image, const std::vector<std::string>& ids,
+                      const DeletionOptions& options = {});
+
+// Edits `targets` in place; `sources` are every image the ground may be gathered from (targets
+// may be among them: their masked pixels are never used).
+DeletionStats delete_objects(const scene::Scene& scene, const std::vector<std::string>& ids, std::vector<DeletionImage>& targets,
+                             const std::vector<DeletionImage>& sources, const DeletionOptions& options = {},
+                             const BackgroundRenderer& background = nullptr);
+
+// A scene's captured images as deletion inputs (linear radiance at the recorded poses).
+std::vector<DeletionImage> scene_images(const scene::Scene& scene);
+
+}  // namespace chatsim::render::inpaint

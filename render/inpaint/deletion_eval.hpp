@@ -1,0 +1,23 @@
+#pragma once
+// Measuring deletion on the demo scene: each vehicle with clean plates is removed in turn, by
+// this method and by the cv::inpaint (Telea) baseline on the same masks, and compared with the
+// plates inside the mask (PSNR, SSIM), for temporal flicker (how much the filled ground
+// changes from frame to frame, in 8-bit levels), and for time per image.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/scene/scene.hpp"
+
+namespace chatsim::render::inpaint {
+
+struct DeletionEvalOptions {
+  std::vector<std::string> objects;  // empty: every vehicle with plates
+  int max_objects = 0;               // 0: no limit (the largest plates first)
+  std::string save_dir;              // before / after / baseline / plate images
+};
+
+nlohmann::json evaluate_deletion(const scene::Scene& scene, const DeletionEvalOptions& options);
+
+}  // namespace chatsim::render::inpaint
