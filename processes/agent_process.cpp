@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "agents/core/agent_registry.hpp"
+#include "agents/render/render_agents.hpp"
 #include "processes/agent_liveness.hpp"
 #include "common/bus/endpoint.hpp"
 #include "common/bus/errors.hpp"
@@ -73,12 +74,19 @@ bus::Node::Reply answer_agent_request(agents::Agent& agent, const PathPolicy& po
   return {msgs::Payload::AgentResponse, resp.Union()};
 }
 
+// The conversation a process is working for (progress messages carry it).
+std::string& current_conversation() {
+  static std::string id;
+  return id;
+}
+
 // /chat/request (the manager only): ChatRequest in, ChatResponse out.
 bus::Node::Reply answer_chat_request(agents::Agent& agent, const PathPolicy& policy, const std::string& node,
                                      const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
   const auto* req = request.payload<msgs::ChatRequest>();
   if (req == nullptr) return wrong_payload(fbb, node, "a ChatRequest");
   const std::string conversation(bus::view(req->conversation_id()));
+  current_conversation() = conversation;
   const agents::AgentCall call{"chat", std::string(bus::view(req->scene())),
                                {{"command", bus::view(req->command())},
                                 {"conversation_id", conversation},
@@ -142,8 +150,9 @@ agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::millisecon
       const auto sent_to = liveness->snapshot(kind, mono_s());
       give_up = [liveness, kind, sent_to] { return liveness->lost(kind, sent_to, mono_s()); };
     }
+    const auto wait = call.timeout_s > 0 ? std::chrono::milliseconds(int64_t(call.timeout_s * 1000)) : timeout;
     const auto result =
-        node.call(bus::topics::agent_request(kind), fbb, msgs::Payload::AgentRequest, req.Union(), timeout, give_up);
+        node.call(bus::topics::agent_request(kind), fbb, msgs::Payload::AgentRequest, req.Union(), wait, give_up);
     if (!result.ok())
       return agents::AgentOutcome::failure(
           agents::ErrorKind::Unavailable,
@@ -221,6 +230,14 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
   return exit_code::kOk;
 }
 
+agents::render::PipelineProgress progress_publisher(bus::Node& node) {
+  return [&node](const std::string& stage, double fraction, const std::string& message) {
+    flatbuffers::FlatBufferBuilder fbb(256);
+    const auto p = msgs::CreateChatProgressDirect(fbb, current_conversation().c_str(), stage.c_str(), float(fraction), message.c_str());
+    node.publish(bus::topics::kChatProgress, fbb, msgs::Payload::ChatProgress, p.Union());
+  };
+}
+
 int agent_main(int argc, char** argv, const std::string& kind) {
   const auto* info = agents::find_agent_kind(kind);
   CLI::App app(info != nullptr ? info->process + ": " + info->role : kind);
@@ -228,12 +245,14 @@ int agent_main(int argc, char** argv, const std::string& kind) {
   add_node_options(app, options);
   if (const int code = parse_or_exit(app, argc, argv); code >= 0) return code;
   auto liveness = std::make_shared<AgentLiveness>();
-  return serve_agent(options, kind, [&, liveness](bus::Node& node) {
+  return serve_agent(options, kind, [&, liveness](bus::Node& node) -> std::unique_ptr<agents::Agent> {
+    if (auto rendering = agents::render::make_render_agent(kind, progress_publisher(node))) return rendering;
     if (kind != "manager") return agents::make_agent(kind);
     // The manager reaches the other agents over the bus; an answer may take a while, but a
     // dead agent is noticed from its heartbeats within seconds.
     watch_heartbeats(node, *liveness);
-    return agents::make_agent(kind, bus_caller(node, std::chrono::seconds(60), liveness.get()));
+    return agents::render::make_rendering_manager(bus_caller(node, std::chrono::seconds(60), liveness.get()),
+                                                  progress_publisher(node));
   });
 }
 

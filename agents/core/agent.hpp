@@ -14,6 +14,7 @@ struct AgentCall {
   std::string action;        // e.g. "decide", "plan", "render"
   std::string scene;         // scene directory
   nlohmann::json args;       // the agent's JSON configuration
+  double timeout_s = 0;      // how long the caller waits (0: the caller's default); long work sets it
 };
 
 struct AgentOutcome {

@@ -34,16 +34,14 @@ const std::vector<AgentKindInfo>& agent_kinds() {
        ""},
       {"background", "chatsim-background",
        "background rendering: exposure-aware radiance field, novel views, depth",
-       "the radiance field arrives with the background rendering issue (#6)"},
-      {"deletion", "chatsim-deletion", "vehicle deletion: masks and inpainting",
-       "inpainting arrives with issue #8"},
-      {"asset", "chatsim-asset", "3D asset management: asset bank and recolouring",
-       "the asset bank (meshes) arrives with issue #7"},
+       "rendering agents are made by agents/render (make_render_agent), not by this decision-only registry"},
+      {"deletion", "chatsim-deletion", "vehicle deletion: masks and inpainting", ""},
+      {"asset", "chatsim-asset", "3D asset management: asset bank and recolouring", ""},
       {"motion", "chatsim-motion", "vehicle motion: placement and trajectories on the lane map",
        ""},
       {"foreground", "chatsim-foreground",
        "foreground rendering: path-traced vehicles lit by the estimated sky, composited",
-       "path tracing and lighting arrive with the foreground rendering issue (#7)"},
+       "rendering agents are made by agents/render (make_render_agent), not by this decision-only registry"},
   };
   return kinds;
 }

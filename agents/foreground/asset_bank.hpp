@@ -18,9 +18,9 @@ struct AssetSpec {
   std::array<int, 3> color_rgb{128, 128, 128};
 };
 
-render::AssetModel model_for(const AssetSpec& spec);
+::chatsim::render::AssetModel model_for(const AssetSpec& spec);
 
 // A file given directly (an asset preview): .glb/.gltf/.obj with glTF axis conventions.
-render::AssetModel model_from_file(const std::string& file, const std::array<int, 3>& color_rgb);
+::chatsim::render::AssetModel model_from_file(const std::string& file, const std::array<int, 3>& color_rgb);
 
 }  // namespace chatsim::agents::foreground

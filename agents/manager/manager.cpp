@@ -429,7 +429,8 @@ namespace {
 
 class ManagerAgent : public Agent {
  public:
-  ManagerAgent(AgentCaller caller, std::shared_ptr<llm::Backend> backend) : manager_(std::move(caller), std::move(backend)) {}
+  ManagerAgent(AgentCaller caller, std::shared_ptr<llm::Backend> backend, Renderer renderer)
+      : manager_(std::move(caller), std::move(backend)), renderer_(std::move(renderer)) {}
   const std::string& kind() const override {
     static const std::string k = "manager";
     return k;
@@ -446,7 +447,23 @@ class ManagerAgent : public Agent {
       return AgentOutcome::failure(ErrorKind::BadRequest, "no scene given: pass the scene directory (--scene DIR)");
     try {
       const auto r = manager_.chat(id, call.scene, call.args.value("command", std::string()));
-      return AgentOutcome::success({{"message", r.message}, {"edit_state", r.edit_state}});
+      json result{{"message", r.message}, {"edit_state", r.edit_state}};
+      if (call.args.value("render", false)) {
+        const std::string out = call.args.value("output_dir", std::string());
+        if (out.empty()) return AgentOutcome::failure(ErrorKind::BadRequest, "rendering needs an output folder (output_dir)");
+        if (!renderer_)
+          return AgentOutcome::failure(ErrorKind::NotImplemented, "this manager was started without the rendering pipeline");
+        const AgentOutcome rendered = renderer_(call.scene, r.edit_state, out);
+        if (!rendered.ok) {
+          AgentOutcome failed = rendered;
+          failed.message = "the decisions were made (" + r.message + ") but rendering failed: " + rendered.message;
+          return failed;
+        }
+        result["output_dir"] = rendered.result.value("output_dir", out);
+        result["render"] = rendered.result;
+        result["message"] = r.message + " Rendered to " + result["output_dir"].get<std::string>() + ".";
+      }
+      return AgentOutcome::success(result);
     } catch (const scene::SceneError& e) {
       return AgentOutcome::failure(ErrorKind::BadRequest, std::string("bad scene: ") + e.what());
     } catch (const llm::BackendError& e) {
@@ -458,12 +475,13 @@ class ManagerAgent : public Agent {
 
  private:
   Manager manager_;
+  Renderer renderer_;
 };
 
 }  // namespace
 
-std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend) {
-  return std::make_unique<ManagerAgent>(std::move(caller), std::move(backend));
+std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend, Renderer renderer) {
+  return std::make_unique<ManagerAgent>(std::move(caller), std::move(backend), std::move(renderer));
 }
 
 }  // namespace chatsim::agents::manager

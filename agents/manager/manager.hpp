@@ -89,7 +89,14 @@ class Manager {
   uint64_t uses_ = 0;
 };
 
-// The manager as an Agent: action "chat" (args: command, conversation_id) and "reset".
-std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend);
+// Renders an edit state into output_dir (the rendering pipeline; see agents/render). Returns the
+// result's summary, or a failure saying why.
+using Renderer = std::function<AgentOutcome(const std::string& scene_dir, const nlohmann::json& edit_state,
+                                            const std::string& output_dir)>;
+
+// The manager as an Agent: action "chat" (args: command, conversation_id, render, output_dir)
+// and "reset". With render true, the round's edit state is rendered by `renderer` (none: the
+// manager says it cannot render).
+std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend, Renderer renderer = {});
 
 }  // namespace chatsim::agents::manager

@@ -1,5 +1,7 @@
 #include "common/bus/node.hpp"
 
+#include <algorithm>
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -270,7 +272,8 @@ CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fb
     }
     auto m = receive(std::min(left, std::chrono::milliseconds(100)));
     if (!m) continue;
-    if (m->topic() == topics::kHeartbeat) {
+    if (m->topic() == topics::kHeartbeat ||
+        std::find(call_dispatch_.begin(), call_dispatch_.end(), m->topic()) != call_dispatch_.end()) {
       dispatch(*m);
       continue;
     }

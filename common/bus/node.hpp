@@ -119,6 +119,9 @@ class Node {
   PublishStatus respond(const Message& request, flatbuffers::FlatBufferBuilder& fbb,
                         msgs::Payload type, flatbuffers::Offset<void> payload);
 
+  // Messages on this topic are dispatched to their handlers even while call() waits (as
+  // heartbeats are): for progress reports that must show while a request runs.
+  void dispatch_during_calls(const std::string& topic) { call_dispatch_.push_back(topic); }
   // Dispatches queued and incoming messages, waiting at most timeout for the first one.
   // Returns the number of messages dispatched.
   size_t spin_once(std::chrono::milliseconds timeout);
@@ -157,6 +160,7 @@ class Node {
   uint64_t instance_;
   std::string reply_topic_;
   std::vector<Subscription> subscriptions_;
+  std::vector<std::string> call_dispatch_;
   std::deque<Message> queued_;
   std::map<std::string, uint64_t, std::less<>> seqs_;
   SequenceTracker tracker_;

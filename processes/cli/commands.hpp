@@ -20,5 +20,6 @@ void add_eval_nvs_command(CLI::App& eval, int& result);
 void add_light_command(CLI::App& app, int& result);
 void add_eval_light_command(CLI::App& eval, int& result);
 void add_eval_deletion_command(CLI::App& eval, int& result);
+void add_run_commands(CLI::App& app, int& result);  // run, chat
 
 }  // namespace chatsim::cli

@@ -50,8 +50,8 @@ TEST(Processes, NoBusIsExitCode3) {
   EXPECT_EQ(WEXITSTATUS(*status), 3);
 }
 
-// Each agent beats, answers an action it does not have with an error (the renderers, still
-// missing, with an explicit NotImplemented), and exits cleanly within 1 s of SIGTERM and SIGINT.
+// Each agent beats, answers an action it does not have with a bad-request error, and exits
+// cleanly within 1 s of SIGTERM and SIGINT.
 TEST(Processes, AgentsAnswerAndStopWithinOneSecond) {
   test_support::InProcessBus b;
   bus::Node client(b.options("client"), b.context());
@@ -71,8 +71,7 @@ TEST(Processes, AgentsAnswerAndStopWithinOneSecond) {
     ASSERT_NE(resp, nullptr);
     EXPECT_FALSE(resp->ok());
     ASSERT_NE(resp->error(), nullptr);
-    const bool renderer = kind == "background" || kind == "foreground";
-    EXPECT_EQ(resp->error()->code(), renderer ? msgs::ErrorCode::NotImplemented : msgs::ErrorCode::BadRequest) << kind;
+    EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest) << kind;
     EXPECT_EQ(bus::view(resp->error()->node()), kind);
 
     const double t0 = mono_s();

@@ -12,8 +12,8 @@ TEST(AgentRegistry, HasTheSevenAgentsOfTheDesign) {
   EXPECT_THROW(make_agent("painter"), std::invalid_argument);
 }
 
-// Until an agent's capability lands, it says so instead of inventing a result; the others
-// refuse actions they do not have.
+// This registry makes the decision agents; asked for a rendering agent it says where those are
+// made instead of inventing a result. Every agent refuses actions it does not have.
 TEST(AgentRegistry, MissingCapabilitiesAnswerNotImplemented) {
   for (const auto& k : agent_kinds()) {
     auto agent = make_agent(k.kind);
@@ -22,7 +22,7 @@ TEST(AgentRegistry, MissingCapabilitiesAnswerNotImplemented) {
     const bool renderer = k.kind == "background" || k.kind == "foreground";
     EXPECT_EQ(out.error, renderer ? ErrorKind::NotImplemented : ErrorKind::BadRequest) << k.kind;
     if (renderer) {
-      EXPECT_NE(out.message.find("issue"), std::string::npos) << out.message;
+      EXPECT_NE(out.message.find("agents/render"), std::string::npos) << out.message;
     }
   }
 }

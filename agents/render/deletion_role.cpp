@@ -1,0 +1,59 @@
+#include "agents/render/deletion_role.hpp"
+
+#include "agents/core/scene_cache.hpp"
+#include "agents/render/background_role.hpp"
+#include "agents/render/render_job.hpp"
+#include "render/image_io.hpp"
+#include "render/inpaint/deletion.hpp"
+
+namespace chatsim::agents::render {
+namespace fs = std::filesystem;
+using chatsim::render::inpaint::DeletionImage;
+
+AgentOutcome deletion_inpaint(const AgentCall& call) {
+  try {
+    const auto s = cached_scene(call.scene);
+    const RenderJob job = RenderJob::from_json(call.args);
+    if (job.in.empty()) return AgentOutcome::failure(ErrorKind::BadRequest, "args.in: missing: the background stage's folder");
+    for (const auto& id : job.removed)
+      if (s->object(id) == nullptr)
+        return AgentOutcome::failure(ErrorKind::BadRequest, "args.removed: no object '" + id + "' in " + (s->dir / "objects.json").string());
+    std::shared_ptr<const chatsim::render::gs::RadianceField> model;
+    if (!job.model.empty()) model = load_model_cached(job.model);
+    const auto images = view_images(*s, job, model.get());
+    std::vector<DeletionImage> targets;
+    for (const auto& im : images) {
+      DeletionImage d;
+      d.frame = im.frame, d.camera = im.camera, d.cam = im.cam, d.pose = im.pose, d.time = im.time;
+      d.exposure = read_exposure(job.in, im.camera, im.frame);
+      const fs::path f = radiance_file(job.in, im.camera, im.frame);
+      if (!fs::exists(f)) return AgentOutcome::failure(ErrorKind::BadRequest, "args.in: no background image " + f.string());
+      d.radiance = chatsim::render::read_float_image(f);
+      targets.push_back(std::move(d));
+    }
+    chatsim::render::inpaint::DeletionStats stats;
+    if (!job.removed.empty()) {
+      const auto sources = chatsim::render::inpaint::scene_images(*s);
+      chatsim::render::inpaint::BackgroundRenderer behind;
+      if (model)
+        behind = [&](const DeletionImage& im, const std::vector<std::string>& hidden) {
+          return model->render(*s, im.cam, im.pose, im.time, hidden).radiance;
+        };
+      stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, {}, behind);
+    }
+    for (const auto& im : targets) {
+      chatsim::render::write_exr(radiance_file(job.out, im.camera, im.frame), im.radiance);
+      write_exposure(job.out, im.camera, im.frame, im.exposure);
+      const fs::path d = depth_file(job.in, im.camera, im.frame);
+      if (fs::exists(d)) fs::copy_file(d, depth_file(job.out, im.camera, im.frame), fs::copy_options::overwrite_existing);
+    }
+    return AgentOutcome::success({{"images", targets.size()}, {"edited", stats.images_edited}, {"ground_seen", stats.ground_seen},
+                                  {"fallback_pixels", stats.fallback_pixels}, {"seconds", stats.seconds}});
+  } catch (const scene::SceneError& e) {
+    return AgentOutcome::failure(ErrorKind::BadRequest, std::string("bad scene: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    return AgentOutcome::failure(ErrorKind::BadRequest, e.what());
+  }
+}
+
+}  // namespace chatsim::agents::render

@@ -1,0 +1,77 @@
+#include "agents/render/render_agents.hpp"
+
+#include "agents/core/agent_registry.hpp"
+#include "agents/decision/decision_agents.hpp"
+#include "agents/render/background_role.hpp"
+#include "agents/render/deletion_role.hpp"
+#include "agents/render/foreground_role.hpp"
+
+namespace chatsim::agents::render {
+namespace {
+
+class BackgroundAgent : public Agent {
+ public:
+  explicit BackgroundAgent(PipelineProgress progress) : progress_(std::move(progress)) {}
+  const std::string& kind() const override {
+    static const std::string k = "background";
+    return k;
+  }
+  AgentOutcome handle(const AgentCall& call) override {
+    return role_.handle(call, [this](double f, const std::string& m) {
+      if (progress_) progress_("training", f, m);
+    });
+  }
+
+ private:
+  BackgroundRole role_;
+  PipelineProgress progress_;
+};
+
+// The deletion agent decides which objects a phrase means, and removes them from images.
+class DeletionAgent : public Agent {
+ public:
+  DeletionAgent() : decide_(make_agent("deletion")) {}
+  const std::string& kind() const override { return decide_->kind(); }
+  AgentOutcome handle(const AgentCall& call) override {
+    if (call.action == "inpaint") return deletion_inpaint(call);
+    return decide_->handle(call);
+  }
+
+ private:
+  std::unique_ptr<Agent> decide_;
+};
+
+class ForegroundAgent : public Agent {
+ public:
+  const std::string& kind() const override {
+    static const std::string k = "foreground";
+    return k;
+  }
+  AgentOutcome handle(const AgentCall& call) override {
+    if (call.action == "render") return foreground_render(call);
+    return AgentOutcome::failure(ErrorKind::BadRequest, "foreground has no action '" + call.action + "' (actions: render)");
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Agent> make_render_agent(const std::string& kind, const PipelineProgress& progress) {
+  if (kind == "background") return std::make_unique<BackgroundAgent>(progress);
+  if (kind == "deletion") return std::make_unique<DeletionAgent>();
+  if (kind == "foreground") return std::make_unique<ForegroundAgent>();
+  return nullptr;
+}
+
+std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const PipelineProgress& progress) {
+  std::shared_ptr<llm::Backend> backend = llm::make_backend();
+  manager::Renderer renderer = [caller, progress](const std::string& scene, const nlohmann::json& edit, const std::string& out) {
+    RenderTask task;
+    task.scene_dir = scene;
+    task.edit_state = edit;
+    task.output_dir = out;
+    return render_edit(caller, task, progress);
+  };
+  return manager::make_manager_agent(std::move(caller), backend, std::move(renderer));
+}
+
+}  // namespace chatsim::agents::render
