@@ -1,5 +1,6 @@
 #include "agents/render/background_role.hpp"
 
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -61,6 +62,8 @@ AgentOutcome BackgroundRole::ensure_model(const AgentCall& call, const RoleProgr
   chatsim::render::gs::TrainOptions o;
   o.preset = preset;
   if (call.args.contains("iterations")) o.max_iterations = call.args["iterations"].get<int>();
+  // Tests and quick looks cap training ($CHATSIM_TRAIN_ITERATIONS); the cache keeps the preset's name.
+  if (const char* it = std::getenv("CHATSIM_TRAIN_ITERATIONS"); it != nullptr && std::atoi(it) > 0) o.max_iterations = std::atoi(it);
   if (call.args.contains("max_width")) o.max_width = call.args["max_width"].get<int>();
   o.progress = [&](int it, int total, double loss, double psnr, size_t n) {
     if (progress && (it % 50 == 0 || it == total))

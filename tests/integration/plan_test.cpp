@@ -20,17 +20,6 @@ fs::path layout_scene() {
   return fs::path(CHATSIM_SOURCE_DIR) / ".." / "shared" / "data" / "commands" / "scene-layout-dev";
 }
 
-int count_processes(const std::string& name) {
-  const std::string cmd = "pgrep -x " + name + " -P " + std::to_string(getpid()) + " | wc -l";
-  FILE* p = popen(cmd.c_str(), "r");
-  int n = 0;
-  if (p != nullptr) {
-    if (fscanf(p, "%d", &n) != 1) n = 0;
-    pclose(p);
-  }
-  return n;
-}
-
 }  // namespace
 
 TEST(Plan, TwoRoundsThroughTheBusPrintTheEditState) {
@@ -57,7 +46,7 @@ TEST(Plan, TwoRoundsThroughTheBusPrintTheEditState) {
   EXPECT_LE(trajectory.size(), 100u);
   EXPECT_FALSE(state["notes"].empty());
   EXPECT_EQ(state["rounds"].size(), 2u);
-  EXPECT_EQ(count_processes("chatsim-motion"), 0);
+  EXPECT_EQ(test_support::count_children("chatsim-motion"), 0);
 }
 
 TEST(Plan, BadSceneIsAUsageErrorNamingTheFile) {

@@ -68,6 +68,18 @@ inline void kill_and_reap(pid_t pid) {
   waitpid(pid, nullptr, 0);
 }
 
+// How many processes of this name are children of the test (left behind ones show here).
+inline int count_children(const std::string& name) {
+  const std::string cmd = "pgrep -x " + name + " -P " + std::to_string(getpid()) + " | wc -l";
+  FILE* p = popen(cmd.c_str(), "r");
+  int n = 0;
+  if (p != nullptr) {
+    if (fscanf(p, "%d", &n) != 1) n = 0;
+    pclose(p);
+  }
+  return n;
+}
+
 struct ScopedProcess {
   pid_t pid = -1;
   explicit ScopedProcess(pid_t p) : pid(p) {}
