@@ -1,21 +1,22 @@
 #!/usr/bin/env bash
-# The README's main-job command: sets up and builds, generates the embedded demo street
-# (seeded, cached in build/demo-scene), and runs the flagship command through the process graph
-# (chatsim plan starts the bus and the decision agents, and stops them after). The edit state
-# is written to output/demo/edit.json. Pass your own command(s) as arguments to replace it.
-# Rendering the result (background, deletion, foreground) is not built yet: see the README.
+# The README's main-job command: sets up and builds, renders the embedded demo street (seeded,
+# path traced, cached in build/demo-scene), and runs the flagship command through all eight
+# processes: "Remove all cars, add a police car chasing a Porsche that drives the wrong way
+# toward me, and move the view 5 m ahead", then "Now make the Porsche yellow and faster."
+# (chatsim run starts the processes and stops them after). The first run also trains the
+# scene's radiance field (cached in ~/.cache/chatsim); later runs reuse both. The result
+# (video, frames, depth, labels, edit.json) lands in output/demo. Pass your own command(s) as
+# arguments to replace the example.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/build.sh
 scene=build/demo-scene
-if [ ! -f "$scene/scene.json" ]; then
-  ./build/bin/chatsim scene demo --out "$scene" --seed 1 --layout-only
+if [ ! -f "$scene/scene.json" ] || grep -q '"layout_only": true' "$scene/scene.json"; then
+  ./build/bin/chatsim scene demo --out "$scene" --seed 1
 fi
 if [ "$#" -eq 0 ]; then
   set -- "Remove all cars, add a police car chasing a Porsche that drives the wrong way toward me, and move the view 5 m ahead" \
          "Now make the Porsche yellow and faster."
 fi
-mkdir -p output/demo
-./build/bin/chatsim plan --scene "$scene" "$@" > output/demo/edit.json.tmp
-mv output/demo/edit.json.tmp output/demo/edit.json
-echo "edit state: $(pwd)/output/demo/edit.json"
+./build/bin/chatsim run --scene "$scene" --out output/demo "$@"
+echo "result: $(pwd)/output/demo (video: $(pwd)/output/demo/video.mp4)"
