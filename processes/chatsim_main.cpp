@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   chatsim::cli::add_radiance_commands(app, result);
   chatsim::cli::add_light_command(app, result);
   chatsim::cli::add_run_commands(app, result);
+  chatsim::cli::add_serve_command(app, result);
   if (const int code = chatsim::processes::parse_or_exit(app, argc, argv); code >= 0) return code;
   return result;
 }

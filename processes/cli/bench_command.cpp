@@ -124,6 +124,7 @@ void add_bench_command(CLI::App& app, int& result) {
   bag->add_option("--out", bag_args->out, "JSON report path (empty: do not write)")->capture_default_str();
   bag->add_option("--seconds", bag_args->config.seconds, "stream length")->check(CLI::PositiveNumber);
   bag->callback([bag_args, &result] { result = run_bag_bench(*bag_args); });
+  add_render_bench_commands(*bench, result);
 }
 
 }  // namespace chatsim::cli

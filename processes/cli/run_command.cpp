@@ -20,92 +20,12 @@
 #include "processes/agent_liveness.hpp"
 #include "processes/agent_process.hpp"
 #include "processes/cli/commands.hpp"
+#include "processes/cli/chat_session.hpp"
 #include "processes/cli/process_graph.hpp"
 
 namespace chatsim::cli {
 namespace {
 namespace fs = std::filesystem;
-
-const std::vector<std::string> kAllAgents{"manager", "view", "background", "deletion", "asset", "motion", "foreground"};
-
-// One conversation with the manager over the bus, showing the progress it publishes.
-class ChatSession {
- public:
-  ChatSession(const std::string& bus, const std::string& scene, std::string conversation)
-      : graph_(bus, kAllAgents), scene_(scene), conversation_(std::move(conversation)) {
-    bus::NodeOptions o;
-    o.name = "run-" + std::to_string(getpid());
-    o.kind = "cli";
-    o.curve = bus::curve_client_from_env();
-    o.bus = graph_.endpoint();
-    o.heartbeat_period = std::chrono::milliseconds(0);
-    node_ = std::make_unique<bus::Node>(o);
-    processes::watch_heartbeats(*node_, liveness_);
-    node_->subscribe(std::string(bus::topics::kChatProgress), [this](const bus::Message& m) {
-      const auto* p = m.payload<msgs::ChatProgress>();
-      if (p == nullptr) return;
-      const std::string stage(bus::view(p->stage()));
-      if (!bar_ || stage != stage_) {
-        if (bar_) bar_->finish();
-        bar_ = std::make_unique<ProgressBar>(stage);
-        stage_ = stage;
-      }
-      bar_->update(p->fraction(), std::string(bus::view(p->message())));
-    });
-    node_->dispatch_during_calls(std::string(bus::topics::kChatProgress));
-    node_->start();
-    for (const double until = mono_s() + 2.0; mono_s() < until && liveness_.snapshot("manager", mono_s()).empty();)
-      node_->spin_once(std::chrono::milliseconds(20));
-    if (conversation_.empty()) conversation_ = o.name;
-  }
-
-  // One round; true when it succeeded. Prints the manager's message and the result folder.
-  bool round(const std::string& command, const std::string& out, double timeout_s, nlohmann::json* result = nullptr) {
-    flatbuffers::FlatBufferBuilder fbb(1024);
-    const std::string out_abs = out.empty() ? "" : fs::absolute(out).lexically_normal().string();
-    const auto req = msgs::CreateChatRequestDirect(fbb, conversation_.c_str(), scene_.c_str(), command.c_str(), !out.empty(),
-                                                   out_abs.c_str());
-    const auto sent_to = liveness_.snapshot("manager", mono_s());
-    bar_ = std::make_unique<ProgressBar>("decisions");
-    stage_ = "decisions";
-    bar_->update(0, "the agents decide");
-    const auto r = node_->call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(),
-                               std::chrono::milliseconds(int64_t(timeout_s * 1000)),
-                               [&] { return liveness_.lost("manager", sent_to, mono_s()); });
-    if (bar_) bar_->finish();
-    bar_.reset();
-    if (!r.ok()) {
-      spdlog::error("no answer from the manager: {}", r.error_message);
-      lost_ = true;
-      return false;
-    }
-    const auto* resp = r.response->payload<msgs::ChatResponse>();
-    if (resp == nullptr || !resp->ok()) {
-      spdlog::error("{}", resp && resp->error() ? bus::view(resp->error()->message()) : "the manager failed");
-      return false;
-    }
-    std::cerr << bus::view(resp->message()) << "\n";
-    if (result != nullptr) {
-      *result = nlohmann::json::parse(bus::view(resp->edit_state_json()));
-      (*result)["output_dir"] = std::string(bus::view(resp->output_dir()));
-    }
-    if (!bus::view(resp->output_dir()).empty()) std::cout << "video: " << (fs::path(bus::view(resp->output_dir())) / "video.mp4").string() << std::endl;
-    return true;
-  }
-  bool lost() const { return lost_; }
-  ~ChatSession() {
-    if (node_) node_->shutdown();
-  }
-
- private:
-  ProcessGraph graph_;
-  std::string scene_, conversation_;
-  std::unique_ptr<bus::Node> node_;
-  processes::AgentLiveness liveness_;
-  std::unique_ptr<ProgressBar> bar_;
-  std::string stage_;
-  bool lost_ = false;
-};
 
 struct RunArgs {
   std::string scene, out = "output/run", bus, conversation;
@@ -134,12 +54,16 @@ int run_run(const RunArgs& a) {
   if (!check_scene(scene_dir)) return exit_code::kUsage;
   try {
     ChatSession session(a.bus, scene_dir, a.conversation);
-    // Every round but the last only decides; the last is rendered (earlier rounds' stages are
-    // cached anyway when rendered by chat).
+    // Every round but the last only decides; the last is rendered.
     for (size_t i = 0; i < a.rounds.size(); ++i) {
       const bool last = i + 1 == a.rounds.size();
-      if (!session.round(a.rounds[i], last ? a.out : "", a.timeout_s))
+      const auto r = session.round(a.rounds[i], last ? a.out : "", a.timeout_s);
+      if (!r.ok) {
+        spdlog::error("round {}: {}", i + 1, r.message);
         return session.lost() ? exit_code::kBusUnavailable : exit_code::kFailure;
+      }
+      std::cerr << "round " << i + 1 << ": " << r.message << "\n";
+      if (!r.output_dir.empty()) std::cout << "video: " << (fs::path(r.output_dir) / "video.mp4").string() << std::endl;
     }
     return exit_code::kOk;
   } catch (const bus::BusError& e) {
@@ -173,7 +97,14 @@ int run_chat(const ChatArgs& a) {
       if (line.find_first_not_of(" \t") == std::string::npos) continue;
       ++n;
       const std::string out = a.no_render ? "" : (fs::path(a.out_root) / ("round-" + std::to_string(n))).string();
-      if (!session.round(line, out, a.timeout_s) && session.lost()) return exit_code::kBusUnavailable;
+      const auto r = session.round(line, out, a.timeout_s);
+      if (!r.ok) {
+        spdlog::error("{}", r.message);
+        if (session.lost()) return exit_code::kBusUnavailable;
+        continue;
+      }
+      std::cerr << r.message << "\n";
+      if (!r.output_dir.empty()) std::cout << "video: " << (fs::path(r.output_dir) / "video.mp4").string() << std::endl;
     }
     return exit_code::kOk;
   } catch (const bus::BusError& e) {

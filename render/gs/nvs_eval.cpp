@@ -56,6 +56,11 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
       const std::string shift = v["shift"];
       evaluate(shift == "none" ? "truth_unshifted" : "truth_shifted_" + shift, v["name"], *cam, pose,
                v["timestamp_s"].get<double>(), v["exposure_s"].get<double>(), s.dir / v["image"].get<std::string>());
+      // Diagnosis: the same view at the pose training believes (recorded, corrected). Much
+      // better than at the true pose means the pose corrections did not find the truth.
+      if (shift == "none")
+        evaluate("truth_unshifted_at_model_pose", v["name"], *cam, model.corrected_pose(s, v["frame"], v["camera"]),
+                 v["timestamp_s"].get<double>(), v["exposure_s"].get<double>(), s.dir / v["image"].get<std::string>());
     }
   }
   json summary = json::object();

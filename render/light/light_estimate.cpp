@@ -224,18 +224,23 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
     for (int y = 0; y < v.rgb.rows; ++y)
       for (int x = 0; x < v.rgb.cols; ++x) g.at<float>(y, x) = luminance(linear_pixel(v, v.rgb.at<cv::Vec3b>(y, x)));
     gray.push_back(g);
-    // A visible sun: a clipped blob mostly surrounded by sky.
+    // A visible sun: a clipped blob (a low sun is orange: one clipped channel is enough) above
+    // the horizon.
     cv::Mat clipped(v.rgb.rows, v.rgb.cols, CV_8U, cv::Scalar(0));
     for (int y = 0; y < v.rgb.rows; ++y)
       for (int x = 0; x < v.rgb.cols; ++x) {
         const cv::Vec3b p = v.rgb.at<cv::Vec3b>(y, x);
-        if (mask.at<uchar>(y, x) && p[0] >= kClipped && p[1] >= kClipped && p[2] >= kClipped) clipped.at<uchar>(y, x) = 255;
+        if (std::max({p[0], p[1], p[2]}) >= kClipped && pixel_dir(v, x, y).z() > -0.02f) clipped.at<uchar>(y, x) = 255;
       }
     cv::Mat labels, stats, centroids;
     const int n = cv::connectedComponentsWithStats(clipped, labels, stats, centroids);
     for (int k = 1; k < n; ++k) {
       const int area = stats.at<int>(k, cv::CC_STAT_AREA);
-      if (area < 4 || size_t(area) > v.rgb.total() / 50 || area <= sun_visible_area) continue;
+      if (area < 4 || size_t(area) > v.rgb.total() / 50) continue;
+      // Round and compact (not a white wall's edge), and brighter in the middle than around.
+      const int bw = stats.at<int>(k, cv::CC_STAT_WIDTH), bh = stats.at<int>(k, cv::CC_STAT_HEIGHT);
+      if (double(area) < 0.45 * bw * bh || std::max(bw, bh) > 3 * std::min(bw, bh)) continue;
+      if (area <= sun_visible_area) continue;
       sun_visible_area = area;
       sun_visible = pixel_dir(v, centroids.at<double>(k, 0), centroids.at<double>(k, 1)).cast<double>();
     }

@@ -80,6 +80,23 @@ inline int count_children(const std::string& name) {
   return n;
 }
 
+// How many live processes of this name carry `marker` in their environment: finds processes
+// left behind even after their parent died and they were re-parented.
+inline int count_with_env(const std::string& name, const std::string& marker) {
+  int n = 0;
+  for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+    const std::string pid = e.path().filename().string();
+    if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream comm(e.path() / "comm");
+    std::string c;
+    if (!std::getline(comm, c) || c != name) continue;
+    std::ifstream env(e.path() / "environ", std::ios::binary);
+    const std::string all((std::istreambuf_iterator<char>(env)), std::istreambuf_iterator<char>());
+    if (all.find(marker) != std::string::npos) ++n;
+  }
+  return n;
+}
+
 struct ScopedProcess {
   pid_t pid = -1;
   explicit ScopedProcess(pid_t p) : pid(p) {}

@@ -1,0 +1,55 @@
+#pragma once
+// One conversation with the manager over the bus (started privately when no bus runs): rounds
+// in, results out, with the progress the agents publish shown as it arrives.
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "processes/agent_liveness.hpp"
+#include "processes/cli/process_graph.hpp"
+
+namespace chatsim::bus {
+class Node;
+}
+namespace chatsim {
+class ProgressBar;
+}
+
+namespace chatsim::cli {
+
+// Every agent process a rendered round needs.
+extern const std::vector<std::string> kAllAgents;
+
+class ChatSession {
+ public:
+  // stage, fraction 0..1, message; default: progress bars on stderr.
+  using Progress = std::function<void(const std::string&, double, const std::string&)>;
+  ChatSession(const std::string& bus, const std::string& scene, std::string conversation, Progress progress = {});
+  ~ChatSession();
+
+  struct Outcome {
+    bool ok = false;
+    std::string message;          // the manager's answer, or why the round failed
+    nlohmann::json edit_state;
+    std::string output_dir;       // empty when not rendered
+  };
+  // One round; renders into out when it is not empty.
+  Outcome round(const std::string& command, const std::string& out, double timeout_s);
+  bool lost() const { return lost_; }
+  const std::string& conversation() const { return conversation_; }
+
+ private:
+  void show(const std::string& stage, double fraction, const std::string& message);
+  ProcessGraph graph_;
+  std::string scene_, conversation_;
+  Progress progress_;
+  std::unique_ptr<bus::Node> node_;
+  processes::AgentLiveness liveness_;
+  std::unique_ptr<ProgressBar> bar_;
+  std::string stage_;
+  bool lost_ = false;
+};
+
+}  // namespace chatsim::cli

@@ -1,0 +1,224 @@
+// chatsim bench foreground / light / deletion / nvs / e2e: the rendering methods' speed against
+// their accuracy, each against a baseline measured in the same run; JSON and a PNG chart in
+// bench/results/.
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/chart.hpp"
+#include "bench/foreground_bench.hpp"
+#include "common/util/exit_codes.hpp"
+#include "processes/cli/commands.hpp"
+#include "render/gs/nvs_eval.hpp"
+#include "render/gs/trainer.hpp"
+#include "render/inpaint/deletion_eval.hpp"
+#include "render/light/light_eval.hpp"
+
+namespace chatsim::cli {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+void write_report(const fs::path& file, const json& report) {
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  std::ofstream(file.string() + ".tmp") << report.dump(1) << "\n";
+  fs::rename(file.string() + ".tmp", file);
+  std::cerr << "wrote " << file.string() << "\n";
+}
+
+namespace {
+
+struct ForegroundArgs {
+  std::string out = "bench/results/foreground.json";
+  bool quick = false;
+};
+
+int run_foreground(const ForegroundArgs& a) {
+  bench::ForegroundBenchConfig c;
+  c.quick = a.quick;
+  std::cerr << "bench foreground: one car over about a fifth of a 640x426 frame at several sample counts...\n";
+  const json r = bench::run_foreground_bench(c);
+  std::vector<bench::ChartPoint> pts;
+  for (const auto& row : r["runs"]) {
+    const std::string label = std::to_string(row["spp"].get<int>()) + " spp" + (row["denoise"].get<bool>() ? " smoothed" : "");
+    pts.push_back({label, row["seconds"].get<double>(), row["psnr"].get<double>()});
+    std::printf("%-16s %6.2f s  PSNR %5.1f dB\n", label.c_str(), row["seconds"].get<double>(), row["psnr"].get<double>());
+  }
+  write_report(a.out, r);
+  fs::path png(a.out);
+  png.replace_extension(".png");
+  bench::write_scatter_png(png, {"Foreground path tracing: noise (PSNR vs 1024 spp) against time per frame", "seconds per frame",
+                                 "PSNR [dB]", true},
+                           pts);
+  return exit_code::kOk;
+}
+
+struct LightArgs {
+  std::vector<std::string> hdri;
+  std::string out = "bench/results/light.json";
+  int headings = 8, width = 320;
+};
+
+int run_light(const LightArgs& a) {
+  json all = json::array();
+  std::vector<bench::ChartPoint> pts;
+  std::vector<double> angles, logs;
+  for (const auto& f : a.hdri) {
+    const auto pano = render::EnvMap::read(f);
+    const json r = render::light::evaluate_on_panorama(pano, fs::path(f).filename().string(), a.headings, a.width);
+    all.push_back(r);
+    pts.push_back({r["panorama"], r["median_seconds"], r["median_angular_error_deg"]});
+    for (const auto& h : r["headings"]) angles.push_back(h["peak_angular_error_deg"]), logs.push_back(h["log10_intensity_error"]);
+    std::printf("%-16s median peak error %6.1f deg, log10 intensity error %.2f\n", r["panorama"].get<std::string>().c_str(),
+                r["median_angular_error_deg"].get<double>(), r["median_log10_intensity_error"].get<double>());
+  }
+  // The baseline, in the same run: a fixed guess (sun 45 degrees up, straight ahead of the car).
+  auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  std::vector<double> base;
+  for (const auto& r : all)
+    for (const auto& h : r["headings"]) {
+      const double heading = h["heading_deg"].get<double>() * M_PI / 180;
+      const Eigen::Vector3f guess(float(std::cos(heading) * 0.707), float(std::sin(heading) * 0.707), 0.707f);
+      const Eigen::Vector3f peak(r["peak_direction"][0].get<float>(), r["peak_direction"][1].get<float>(), r["peak_direction"][2].get<float>());
+      base.push_back(std::acos(std::clamp(double(guess.dot(peak)), -1.0, 1.0)) * 180 / M_PI);
+    }
+  const json report{{"panoramas", all},
+                    {"median_angular_error_deg", median(angles)},
+                    {"median_log10_intensity_error", median(logs)},
+                    {"baseline_fixed_guess_median_angular_error_deg", median(base)},
+                    {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
+  write_report(a.out, report);
+  fs::path png(a.out);
+  png.replace_extension(".png");
+  bench::write_scatter_png(png, {"Lighting estimation: median peak direction error per panorama", "seconds per estimate",
+                                 "median peak error [deg] (lower is better)", true},
+                           pts);
+  std::printf("all: median peak error %.1f deg (fixed-guess baseline %.1f deg), median log10 intensity error %.2f\n",
+              median(angles), median(base), median(logs));
+  return exit_code::kOk;
+}
+
+struct DeletionArgs {
+  std::string scene, out = "bench/results/deletion.json", save;
+  int max_objects = 6;
+};
+
+int run_deletion(const DeletionArgs& a) {
+  const auto s = scene::load_scene(a.scene);
+  render::inpaint::DeletionEvalOptions o;
+  o.max_objects = a.max_objects;
+  o.save_dir = a.save;
+  const json r = render::inpaint::evaluate_deletion(s, o);
+  write_report(a.out, r);
+  fs::path png(a.out);
+  png.replace_extension(".png");
+  const auto& sm = r["summary"];
+  bench::write_scatter_png(png, {"Deletion inside the mask vs clean plates", "seconds per image", "PSNR in the mask [dB]", true},
+                           {{"ground map + exemplar", sm["seconds_per_image"], sm["psnr"]},
+                            {"cv::inpaint Telea", sm["baseline_seconds_per_image"], sm["baseline_psnr"]}});
+  std::printf("deletion: PSNR %.2f dB (Telea %.2f dB), %.2f s per image (Telea %.2f s), flicker %.2f (Telea %.2f)\n",
+              sm["psnr"].get<double>(), sm["baseline_psnr"].get<double>(), sm["seconds_per_image"].get<double>(),
+              sm["baseline_seconds_per_image"].get<double>(), sm["flicker"].get<double>(), sm["baseline_flicker"].get<double>());
+  return exit_code::kOk;
+}
+
+struct NvsArgs {
+  std::string scene, out;
+  std::vector<std::string> configs{"fast-500", "fast-1000", "fast", "fast-no-exposure", "fast-no-pose-refinement"};
+  int holdout = 8, max_width = 0;
+};
+
+int run_nvs(const NvsArgs& a) {
+  const auto s = scene::load_scene(a.scene);
+  const std::string out = a.out.empty() ? "bench/results/nvs-" + s.name + ".json" : a.out;
+  json runs = json::array();
+  std::vector<bench::ChartPoint> train_pts, render_pts;
+  for (const auto& name : a.configs) {
+    render::gs::TrainOptions o;
+    o.holdout = a.holdout;
+    o.max_width = a.max_width;
+    // "<preset>[-<iterations>][-no-exposure][-no-pose-refinement]"
+    std::string rest = name;
+    auto take = [&](const std::string& suffix) {
+      const size_t at = rest.find(suffix);
+      if (at == std::string::npos) return false;
+      rest.erase(at, suffix.size());
+      return true;
+    };
+    o.exposure = !take("-no-exposure");
+    o.pose_refinement = !take("-no-pose-refinement");
+    const size_t dash = rest.find('-');
+    o.preset = rest.substr(0, dash);
+    if (dash != std::string::npos) o.max_iterations = std::stoi(rest.substr(dash + 1));
+    std::cerr << "bench nvs: " << name << "...\n";
+    render::gs::TrainReport tr;
+    const auto model = render::gs::train(s, o, &tr);
+    render::gs::NvsOptions no;
+    no.holdout = a.holdout;
+    const json ev = render::gs::evaluate_nvs(model, s, no);
+    runs.push_back({{"config", name}, {"train_seconds", tr.seconds}, {"iterations", tr.iterations}, {"converged", tr.converged},
+                    {"gaussians", tr.gaussians}, {"train_psnr", tr.train_psnr}, {"sets", ev["sets"]}, {"width", ev["width"]}});
+    const std::string set = ev["sets"].contains("truth_unshifted") ? "truth_unshifted" : "held_out";
+    if (ev["sets"].contains(set)) {
+      train_pts.push_back({name, tr.seconds / 60, ev["sets"][set]["psnr"]});
+      render_pts.push_back({name, ev["sets"][set]["render_s"], ev["sets"][set]["psnr"]});
+    }
+    for (const auto& [k, v] : ev["sets"].items())
+      std::printf("  %-24s %-26s PSNR %5.2f dB  SSIM %.3f  %.3f s/image\n", name.c_str(), k.c_str(), v["psnr"].get<double>(),
+                  v["ssim"].get<double>(), v["render_s"].get<double>());
+    std::printf("  %-24s trained %.0f s, %d iterations, %zu Gaussians\n", name.c_str(), tr.seconds, tr.iterations, tr.gaussians);
+  }
+  const json report{{"scene", s.name}, {"holdout", a.holdout}, {"runs", runs},
+                    {"targets", {{"demo_fast_train_minutes", 10}, {"demo_psnr_db", 30}, {"demo_ssim", 0.9},
+                                 {"nuscenes_psnr_db", 24}, {"render_seconds_640x426", 1}}}};
+  write_report(out, report);
+  fs::path png(out);
+  png.replace_extension("");
+  bench::write_scatter_png(png.string() + "-train.png", {"Radiance field on " + s.name + ": held-out PSNR against training time",
+                                                         "training [min]", "PSNR [dB]", false}, train_pts);
+  bench::write_scatter_png(png.string() + "-render.png", {"Radiance field on " + s.name + ": held-out PSNR against render time",
+                                                          "seconds per image", "PSNR [dB]", false}, render_pts);
+  return exit_code::kOk;
+}
+
+}  // namespace
+
+void add_render_bench_commands(CLI::App& bench, int& result) {
+  auto na = std::make_shared<NvsArgs>();
+  auto* nvs = bench.add_subcommand("nvs", "Radiance field: train several sizes and the ablations (no exposure, no pose "
+                                          "refinement), evaluate each on held-out and ground-truth views; PSNR against "
+                                          "training and render time (long: minutes per configuration)");
+  nvs->add_option("--scene", na->scene, "scene directory")->required();
+  nvs->add_option("--out", na->out, "JSON report (default bench/results/nvs-<scene>.json; PNG charts beside it)");
+  nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement]");
+  nvs->add_option("--holdout", na->holdout, "hold out frames with index % N == N/2");
+  nvs->add_option("--max-width", na->max_width, "downscale wider images to this width");
+  nvs->callback([na, &result] { result = run_nvs(*na); });
+  auto fa = std::make_shared<ForegroundArgs>();
+  auto* fg = bench.add_subcommand("foreground", "Path tracing a car: noise against time per frame at several sample counts");
+  fg->add_option("--out", fa->out, "JSON report (a PNG chart beside it)");
+  fg->add_flag("--quick", fa->quick, "a 256-sample reference instead of 1024");
+  fg->callback([fa, &result] { result = run_foreground(*fa); });
+  auto la = std::make_shared<LightArgs>();
+  auto* light = bench.add_subcommand("light", "Lighting estimation on HDR panoramas (e.g. blender-data's outdoor EXRs), "
+                                              "against a fixed-guess baseline");
+  light->add_option("--hdri", la->hdri, "panoramas")->required()->check(CLI::ExistingFile);
+  light->add_option("--out", la->out, "JSON report (a PNG chart beside it)");
+  light->add_option("--headings", la->headings, "headings per panorama");
+  light->add_option("--width", la->width, "crop width");
+  light->callback([la, &result] { result = run_light(*la); });
+  auto da = std::make_shared<DeletionArgs>();
+  auto* del = bench.add_subcommand("deletion", "Deletion against the demo scene's clean plates, against cv::inpaint Telea");
+  del->add_option("--scene", da->scene, "a rendered demo scene")->required();
+  del->add_option("--out", da->out, "JSON report (a PNG chart beside it)");
+  del->add_option("--max-objects", da->max_objects, "vehicles to remove (largest plates first)");
+  del->add_option("--save", da->save, "before / after / baseline / plate images here");
+  del->callback([da, &result] { result = run_deletion(*da); });
+}
+
+}  // namespace chatsim::cli
