@@ -47,9 +47,11 @@ flatbuffers::Offset<msgs::Error> error_of(flatbuffers::FlatBufferBuilder& fbb,
 std::optional<agents::AgentOutcome> refuse_paths(const PathPolicy& policy, const agents::AgentCall& call) {
   if (auto why = policy.refuse("scene", call.scene))
     return agents::AgentOutcome::failure(agents::ErrorKind::BadRequest, *why);
-  if (call.args.is_object() && call.args.contains("output_dir") && call.args["output_dir"].is_string())
-    if (auto why = policy.refuse("output", call.args["output_dir"].get<std::string>()))
-      return agents::AgentOutcome::failure(agents::ErrorKind::BadRequest, *why);
+  // Every file path a request may carry: results, rendering stages (in, out) and the model.
+  for (const char* key : {"output_dir", "in", "out", "model"})
+    if (call.args.is_object() && call.args.contains(key) && call.args[key].is_string() && !call.args[key].get<std::string>().empty())
+      if (auto why = policy.refuse(key, call.args[key].get<std::string>()))
+        return agents::AgentOutcome::failure(agents::ErrorKind::BadRequest, *why);
   return std::nullopt;
 }
 

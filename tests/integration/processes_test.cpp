@@ -180,3 +180,31 @@ TEST(Processes, PathsOutsideTheAllowedRootsAreRefused) {
         << bus::view(resp->error()->message());
   }
 }
+
+// A rendering agent refuses a stage folder or model outside its allowed roots, even when the
+// scene is inside: a request cannot make it write (or read) elsewhere.
+TEST(Processes, RenderingStagePathsOutsideTheAllowedRootsAreRefused) {
+  const auto root = test_support::temp_path("allowed-root-render");
+  std::filesystem::create_directories(root);
+  test_support::InProcessBus b;
+  ScopedProcess proc(test_support::spawn(
+      {bin("chatsim-background"), "--bus", b.endpoint(), "--allowed-root", root.string()}, "/dev/null"));
+  bus::Node client(b.options("client"), b.context());
+  HeartbeatWatcher watcher(client);
+  client.start();
+  ASSERT_TRUE(watcher.wait_for("background", 5s));
+  const std::string scene = (root / "scene").string();
+  for (const std::string& args : {std::string(R"({"out": "/tmp/../etc/chatsim-stage"})"), R"({"out": ")" + scene + R"(", "model": "/etc/passwd"})"}) {
+    flatbuffers::FlatBufferBuilder fbb;
+    auto req = msgs::CreateAgentRequestDirect(fbb, "background", "render", scene.c_str(), args.c_str());
+    auto r = client.call(bus::topics::agent_request("background"), fbb, msgs::Payload::AgentRequest, req.Union(), 5s);
+    ASSERT_TRUE(r.ok()) << r.error_message;
+    const auto* resp = r.response->payload<msgs::AgentResponse>();
+    ASSERT_NE(resp, nullptr);
+    EXPECT_FALSE(resp->ok());
+    ASSERT_NE(resp->error(), nullptr);
+    EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest);
+    EXPECT_NE(bus::view(resp->error()->message()).find("outside the allowed folders"), std::string_view::npos)
+        << bus::view(resp->error()->message());
+  }
+}
