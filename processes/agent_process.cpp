@@ -141,6 +141,39 @@ void watch_heartbeats(bus::Node& node, AgentLiveness& liveness) {
   });
 }
 
+namespace {
+
+agents::AgentOutcome outcome_of(const std::string& kind, const bus::CallResult& result) {
+  if (!result.ok())
+    return agents::AgentOutcome::failure(
+        agents::ErrorKind::Unavailable,
+        result.error == msgs::ErrorCode::Unavailable && result.error_message.find("agent failed") != std::string::npos
+            ? result.error_message
+            : "the " + kind + " agent did not answer (" + result.error_message + "); is chatsim-" + kind + " running on this bus?");
+  if (const auto* err = result.response->payload<msgs::Error>())
+    return agents::AgentOutcome::failure(agents::ErrorKind::Internal,
+                                         "the " + kind + " agent failed: " + std::string(bus::view(err->message())));
+  const auto* resp = result.response->payload<msgs::AgentResponse>();
+  if (resp == nullptr)
+    return agents::AgentOutcome::failure(agents::ErrorKind::Internal, "the " + kind + " agent sent no AgentResponse");
+  if (!resp->ok()) {
+    const std::string why = resp->error() != nullptr ? std::string(bus::view(resp->error()->message())) : "no reason given";
+    const auto code = resp->error() != nullptr ? resp->error()->code() : msgs::ErrorCode::Internal;
+    const auto kind_of = code == msgs::ErrorCode::BadRequest       ? agents::ErrorKind::BadRequest
+                         : code == msgs::ErrorCode::NotImplemented ? agents::ErrorKind::NotImplemented
+                         : code == msgs::ErrorCode::Unavailable    ? agents::ErrorKind::Unavailable
+                                                                   : agents::ErrorKind::Internal;
+    return agents::AgentOutcome::failure(kind_of, why);
+  }
+  try {
+    return agents::AgentOutcome::success(nlohmann::json::parse(bus::view(resp->result_json())));
+  } catch (const nlohmann::json::parse_error& e) {
+    return agents::AgentOutcome::failure(agents::ErrorKind::Internal, "the " + kind + " agent answered malformed JSON: " + e.what());
+  }
+}
+
+}  // namespace
+
 agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout,
                                         const AgentLiveness* liveness) {
   return [&node, timeout, liveness](const std::string& kind, const agents::AgentCall& call) {
@@ -148,41 +181,65 @@ agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::millisecon
     const auto req = msgs::CreateAgentRequestDirect(fbb, kind.c_str(), call.action.c_str(), call.scene.c_str(),
                                                     call.args.dump().c_str());
     std::function<std::optional<std::string>()> give_up;
+    std::string topic = bus::topics::agent_request(kind);
     if (liveness != nullptr) {
-      const auto sent_to = liveness->snapshot(kind, mono_s());
+      auto sent_to = liveness->snapshot(kind, mono_s());
+      // Several processes of this kind (workers): ask one, not all of them.
+      if (sent_to.size() > 1) {
+        sent_to.resize(1);
+        topic = bus::topics::agent_worker_request(kind, sent_to.front().node);
+      }
       give_up = [liveness, kind, sent_to] { return liveness->lost(kind, sent_to, mono_s()); };
     }
     const auto wait = call.timeout_s > 0 ? std::chrono::milliseconds(int64_t(call.timeout_s * 1000)) : timeout;
-    const auto result =
-        node.call(bus::topics::agent_request(kind), fbb, msgs::Payload::AgentRequest, req.Union(), wait, give_up);
-    if (!result.ok())
-      return agents::AgentOutcome::failure(
-          agents::ErrorKind::Unavailable,
-          result.error == msgs::ErrorCode::Unavailable && result.error_message.find("agent failed") != std::string::npos
-              ? result.error_message
-              : "the " + kind + " agent did not answer (" + result.error_message + "); is chatsim-" + kind +
-                    " running on this bus?");
-    if (const auto* err = result.response->payload<msgs::Error>())
-      return agents::AgentOutcome::failure(agents::ErrorKind::Internal,
-                                           "the " + kind + " agent failed: " + std::string(bus::view(err->message())));
-    const auto* resp = result.response->payload<msgs::AgentResponse>();
-    if (resp == nullptr)
-      return agents::AgentOutcome::failure(agents::ErrorKind::Internal, "the " + kind + " agent sent no AgentResponse");
-    if (!resp->ok()) {
-      const std::string why = resp->error() != nullptr ? std::string(bus::view(resp->error()->message())) : "no reason given";
-      const auto code = resp->error() != nullptr ? resp->error()->code() : msgs::ErrorCode::Internal;
-      const auto kind_of = code == msgs::ErrorCode::BadRequest       ? agents::ErrorKind::BadRequest
-                           : code == msgs::ErrorCode::NotImplemented ? agents::ErrorKind::NotImplemented
-                           : code == msgs::ErrorCode::Unavailable    ? agents::ErrorKind::Unavailable
-                                                                     : agents::ErrorKind::Internal;
-      return agents::AgentOutcome::failure(kind_of, why);
+    return outcome_of(kind, node.call(topic, fbb, msgs::Payload::AgentRequest, req.Union(), wait, give_up));
+  };
+}
+
+agents::manager::FanoutCaller bus_fanout_caller(bus::Node& node, std::chrono::milliseconds timeout, const AgentLiveness& liveness) {
+  return [&node, timeout, &liveness](const std::string& kind, const std::vector<agents::AgentCall>& calls) {
+    std::vector<agents::AgentOutcome> out(calls.size());
+    std::vector<size_t> pending(calls.size());
+    for (size_t i = 0; i < calls.size(); ++i) pending[i] = i;
+    std::vector<int> attempts(calls.size(), 0);
+    while (!pending.empty()) {
+      const auto workers = liveness.snapshot(kind, mono_s());
+      if (workers.empty()) {
+        for (size_t i : pending)
+          out[i] = agents::AgentOutcome::failure(agents::ErrorKind::Unavailable, "no " + kind + " process is running on this bus");
+        break;
+      }
+      // One wave: a call per worker.
+      const size_t n = std::min(workers.size(), pending.size());
+      std::vector<flatbuffers::FlatBufferBuilder> fbbs(n);
+      std::vector<bus::Node::Request> requests(n);
+      double wait_s = 0;
+      for (size_t k = 0; k < n; ++k) {
+        const auto& call = calls[pending[k]];
+        const auto req = msgs::CreateAgentRequestDirect(fbbs[k], kind.c_str(), call.action.c_str(), call.scene.c_str(),
+                                                        call.args.dump().c_str());
+        const std::vector<AgentLiveness::Instance> sent_to{workers[k]};
+        requests[k] = {bus::topics::agent_worker_request(kind, workers[k].node), &fbbs[k], msgs::Payload::AgentRequest,
+                       req.Union(), [&liveness, kind, sent_to] { return liveness.lost(kind, sent_to, mono_s()); }};
+        wait_s = std::max(wait_s, call.timeout_s);
+      }
+      const auto wait = wait_s > 0 ? std::chrono::milliseconds(int64_t(wait_s * 1000)) : timeout;
+      const auto results = node.call_many(requests, wait);
+      std::vector<size_t> again;
+      for (size_t k = 0; k < n; ++k) {
+        const size_t i = pending[k];
+        const bool worker_lost = !results[k].ok() && results[k].error == msgs::ErrorCode::Unavailable;
+        if (worker_lost && ++attempts[i] < 3) {
+          spdlog::warn("{} worker '{}' was lost ({}); giving its work to another", kind, workers[k].node, results[k].error_message);
+          again.push_back(i);
+          continue;
+        }
+        out[i] = outcome_of(kind, results[k]);
+      }
+      again.insert(again.end(), pending.begin() + long(n), pending.end());
+      pending = again;
     }
-    try {
-      return agents::AgentOutcome::success(nlohmann::json::parse(bus::view(resp->result_json())));
-    } catch (const nlohmann::json::parse_error& e) {
-      return agents::AgentOutcome::failure(agents::ErrorKind::Internal,
-                                           "the " + kind + " agent answered malformed JSON: " + e.what());
-    }
+    return out;
   };
 }
 
@@ -207,10 +264,12 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
   try {
     bus::Node node(no);
     auto agent = make(node);
-    node.serve(bus::topics::agent_request(no.kind),
-               [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
-                 return answer_agent_request(*agent, policy, no.name, request, fbb);
-               });
+    const auto answer = [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
+      return answer_agent_request(*agent, policy, no.name, request, fbb);
+    };
+    node.serve(bus::topics::agent_request(no.kind), answer);
+    // Its own topic too, so a manager can spread work over several processes of one kind.
+    node.serve(bus::topics::agent_worker_request(no.kind, no.name), answer);
     if (no.kind == "manager") {
       node.serve(std::string(bus::topics::kChatRequest),
                  [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
@@ -254,7 +313,8 @@ int agent_main(int argc, char** argv, const std::string& kind) {
     // dead agent is noticed from its heartbeats within seconds.
     watch_heartbeats(node, *liveness);
     return agents::render::make_rendering_manager(bus_caller(node, std::chrono::seconds(60), liveness.get()),
-                                                  progress_publisher(node));
+                                                  progress_publisher(node),
+                                                  bus_fanout_caller(node, std::chrono::seconds(3600), *liveness));
   });
 }
 

@@ -50,6 +50,10 @@ void watch_heartbeats(bus::Node& node, AgentLiveness& liveness);
 agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout,
                                         const AgentLiveness* liveness = nullptr);
 
+// Spreads calls over the live processes of a kind (their worker topics), one call per worker at
+// a time; a call whose worker dies is given to another. Needs liveness (heartbeats).
+agents::manager::FanoutCaller bus_fanout_caller(bus::Node& node, std::chrono::milliseconds timeout, const AgentLiveness& liveness);
+
 // The whole main() of an agent process with no options of its own.
 int agent_main(int argc, char** argv, const std::string& kind);
 

@@ -3,6 +3,7 @@
 // so uneven rows balance themselves. The first exception thrown by any item is rethrown.
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -11,7 +12,11 @@
 
 namespace chatsim::render {
 
-inline int default_threads() { return std::max(1, int(std::thread::hardware_concurrency())); }
+// All cores, or $CHATSIM_THREADS (several worker processes on one machine share its cores).
+inline int default_threads() {
+  if (const char* t = std::getenv("CHATSIM_THREADS"); t != nullptr && std::atoi(t) > 0) return std::atoi(t);
+  return std::max(1, int(std::thread::hardware_concurrency()));
+}
 
 // body(item, worker): worker is 0 .. threads-1, for per-thread accumulators.
 inline void parallel_for_workers(int n, int threads, const std::function<void(int, int)>& body) {

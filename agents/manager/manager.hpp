@@ -18,6 +18,9 @@
 namespace chatsim::agents::manager {
 
 using AgentCaller = std::function<AgentOutcome(const std::string& kind, const AgentCall& call)>;
+// Several calls to one kind at once, spread over the live processes of that kind (workers);
+// answers in the calls' order.
+using FanoutCaller = std::function<std::vector<AgentOutcome>(const std::string& kind, const std::vector<AgentCall>& calls)>;
 
 struct AddedVehicle {
   std::string id;

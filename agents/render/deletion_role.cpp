@@ -2,6 +2,7 @@
 
 #include "agents/core/scene_cache.hpp"
 #include "agents/render/background_role.hpp"
+#include "agents/render/foreground_role.hpp"
 #include "agents/render/render_job.hpp"
 #include "render/image_io.hpp"
 #include "render/inpaint/deletion.hpp"
@@ -39,13 +40,24 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
         behind = [&](const DeletionImage& im, const std::vector<std::string>& hidden) {
           return model->render(*s, im.cam, im.pose, im.time, hidden).radiance;
         };
-      stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, {}, behind);
+      // Follow the deleted objects' shadows with the scene's estimated sun.
+      chatsim::render::inpaint::DeletionOptions opts;
+      const auto light = scene_light(*s);
+      if (light.sunny) opts.sun_direction = light.sky.sun_direction.normalized().cast<double>();
+      stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
     }
     for (const auto& im : targets) {
       chatsim::render::write_exr(radiance_file(job.out, im.camera, im.frame), im.radiance);
       write_exposure(job.out, im.camera, im.frame, im.exposure);
       const fs::path d = depth_file(job.in, im.camera, im.frame);
-      if (fs::exists(d)) fs::copy_file(d, depth_file(job.out, im.camera, im.frame), fs::copy_options::overwrite_existing);
+      if (!fs::exists(d)) continue;
+      // Depth without the deleted objects, so an added car is not hidden behind a removed one.
+      cv::Mat depth = chatsim::render::read_float_image(d);
+      if (model && !job.removed.empty()) {
+        const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, job.removed);
+        if (cv::countNonZero(mask) > 0) model->render(*s, im.cam, im.pose, im.time, job.removed).depth.copyTo(depth, mask);
+      }
+      chatsim::render::write_exr(depth_file(job.out, im.camera, im.frame), depth);
     }
     return AgentOutcome::success({{"images", targets.size()}, {"edited", stats.images_edited}, {"ground_seen", stats.ground_seen},
                                   {"fallback_pixels", stats.fallback_pixels}, {"seconds", stats.seconds}});

@@ -62,14 +62,16 @@ std::unique_ptr<Agent> make_render_agent(const std::string& kind, const Pipeline
   return nullptr;
 }
 
-std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const PipelineProgress& progress) {
+std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const PipelineProgress& progress,
+                                              manager::FanoutCaller fanout) {
   std::shared_ptr<llm::Backend> backend = llm::make_backend();
-  manager::Renderer renderer = [caller, progress](const std::string& scene, const nlohmann::json& edit, const std::string& out) {
+  manager::Renderer renderer = [caller, progress, fanout](const std::string& scene, const nlohmann::json& edit,
+                                                          const std::string& out) {
     RenderTask task;
     task.scene_dir = scene;
     task.edit_state = edit;
     task.output_dir = out;
-    return render_edit(caller, task, progress);
+    return render_edit(caller, task, progress, fanout);
   };
   return manager::make_manager_agent(std::move(caller), backend, std::move(renderer));
 }

@@ -14,7 +14,9 @@ namespace chatsim::agents::render {
 // background, deletion or foreground (others: nullptr). `progress` reports long work.
 std::unique_ptr<Agent> make_render_agent(const std::string& kind, const PipelineProgress& progress = {});
 
-// The manager with the rendering pipeline, reaching every agent through `caller`.
-std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const PipelineProgress& progress = {});
+// The manager with the rendering pipeline, reaching every agent through `caller` (and spreading
+// rendering over several worker processes through `fanout`, when given).
+std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const PipelineProgress& progress = {},
+                                              manager::FanoutCaller fanout = {});
 
 }  // namespace chatsim::agents::render

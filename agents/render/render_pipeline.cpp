@@ -29,8 +29,9 @@ struct StageRun {
   json answers = json::array();
 };
 
-StageRun run_stage(const manager::AgentCaller& call, const std::string& kind, const std::string& action, const std::string& scene,
-                   RenderJob job, const std::vector<std::vector<int>>& chunks, const std::string& stage, const json& key,
+StageRun run_stage(const manager::AgentCaller& call, const manager::FanoutCaller& fanout, const std::string& kind,
+                   const std::string& action, const std::string& scene, RenderJob job,
+                   const std::vector<std::vector<int>>& chunks, const std::string& stage, const json& key,
                    const PipelineProgress& progress, double timeout_s) {
   StageRun run;
   const auto t0 = std::chrono::steady_clock::now();
@@ -41,6 +42,24 @@ StageRun run_stage(const manager::AgentCaller& call, const std::string& kind, co
   }
   fs::remove_all(job.out);
   fs::create_directories(job.out);
+  if (fanout && chunks.size() > 1) {
+    // Every chunk at once, spread over the workers of this kind.
+    std::vector<AgentCall> calls;
+    for (const auto& c : chunks) {
+      job.frames = c;
+      calls.push_back(AgentCall{action, scene, job.to_json(), timeout_s});
+    }
+    if (progress) progress(stage, 0, stage + ": " + std::to_string(chunks.size()) + " chunks over the " + kind + " workers");
+    const auto outs = fanout(kind, calls);
+    for (const auto& out : outs) {
+      if (!out.ok) throw std::runtime_error("the " + kind + " agent failed (" + stage + "): " + out.message);
+      run.answers.push_back(out.result);
+    }
+    run.seconds = seconds_since(t0);
+    mark_stage_complete(job.out, {{"key", key}, {"seconds", run.seconds}, {"answers", run.answers}});
+    if (progress) progress(stage, 1.0, stage + ": done in " + std::to_string(int(run.seconds)) + " s");
+    return run;
+  }
   for (size_t k = 0; k < chunks.size(); ++k) {
     job.frames = chunks[k];
     if (progress) progress(stage, double(k) / double(chunks.size()), stage + ": frames " + std::to_string(chunks[k].front()) + "-" + std::to_string(chunks[k].back()));
@@ -56,7 +75,8 @@ StageRun run_stage(const manager::AgentCaller& call, const std::string& kind, co
 
 }  // namespace
 
-AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& task, const PipelineProgress& progress) {
+AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& task, const PipelineProgress& progress,
+                         const manager::FanoutCaller& fanout) {
   const auto t_all = std::chrono::steady_clock::now();
   try {
     if (task.output_dir.empty()) return AgentOutcome::failure(ErrorKind::BadRequest, "no output folder given (--out DIR)");
@@ -98,7 +118,7 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
     // Background.
     const json bg_key{{"scene", skey}, {"view", view::to_json(view)}, {"model", model}};
     job.out = stages / ("background-" + json_hash(bg_key));
-    const StageRun bg = run_stage(call, "background", "render", task.scene_dir, job, chunks, "background", bg_key, progress, 3600);
+    const StageRun bg = run_stage(call, fanout, "background", "render", task.scene_dir, job, chunks, "background", bg_key, progress, 3600);
     timings["background"] = bg.seconds, reuse["background"] = bg.reused;
     fs::path last = job.out;
     json last_key = bg_key;
@@ -109,7 +129,7 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
       dj.in = last;
       dj.removed = removed;
       dj.out = stages / ("deletion-" + json_hash(key));
-      const StageRun del = run_stage(call, "deletion", "inpaint", task.scene_dir, dj, {frames}, "deletion", key, progress, 3600);
+      const StageRun del = run_stage(call, fanout, "deletion", "inpaint", task.scene_dir, dj, {frames}, "deletion", key, progress, 3600);
       timings["deletion"] = del.seconds, reuse["deletion"] = del.reused;
       last = dj.out, last_key = key;
     }
@@ -121,8 +141,7 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
       fj.removed = removed;
       fj.added = added;
       fj.out = stages / ("foreground-" + json_hash(key));
-      json args = fj.to_json();
-      const StageRun fg = run_stage(call, "foreground", "render", task.scene_dir, fj, chunks, "foreground", key, progress, 3600);
+      const StageRun fg = run_stage(call, fanout, "foreground", "render", task.scene_dir, fj, chunks, "foreground", key, progress, 3600);
       timings["foreground"] = fg.seconds, reuse["foreground"] = fg.reused;
       last = fj.out, last_key = key;
     }

@@ -27,6 +27,8 @@ struct RenderTask {
 // stage (background, deletion, foreground, composition, encoding, training), 0..1, message.
 using PipelineProgress = std::function<void(const std::string&, double, const std::string&)>;
 
-AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& task, const PipelineProgress& progress = {});
+// With `fanout`, the background and foreground chunks are spread over that kind's processes.
+AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& task, const PipelineProgress& progress = {},
+                         const manager::FanoutCaller& fanout = {});
 
 }  // namespace chatsim::agents::render

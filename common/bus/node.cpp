@@ -293,6 +293,68 @@ CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fb
   return result;
 }
 
+std::vector<CallResult> Node::call_many(std::vector<Request>& requests, std::chrono::milliseconds timeout) {
+  std::vector<CallResult> results(requests.size());
+  std::vector<std::string> correlation(requests.size());
+  std::vector<bool> open(requests.size(), false);
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  size_t waiting = 0;
+  for (size_t i = 0; i < requests.size(); ++i) {
+    correlation[i] = options_.name + "/" + topics::hex(instance_) + "/" + std::to_string(++call_counter_);
+    PublishOptions po{correlation[i], reply_topic_,
+                      now_ns() + std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count()};
+    if (publish(requests[i].topic, *requests[i].fbb, requests[i].type, requests[i].payload, po) != PublishStatus::Sent) {
+      results[i].error = msgs::ErrorCode::Unavailable;
+      results[i].error_message = "could not send on '" + requests[i].topic + "' (queue full)";
+      continue;
+    }
+    open[i] = true;
+    ++waiting;
+  }
+  while (waiting > 0) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) break;
+    for (size_t i = 0; i < requests.size(); ++i) {
+      if (!open[i] || !requests[i].give_up) continue;
+      if (auto reason = requests[i].give_up()) {
+        results[i].error = msgs::ErrorCode::Unavailable;
+        results[i].error_message = *reason;
+        open[i] = false;
+        --waiting;
+      }
+    }
+    if (waiting == 0) break;
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - now);
+    auto m = receive(std::min(left, std::chrono::milliseconds(100)));
+    if (!m) continue;
+    if (m->topic() == topics::kHeartbeat ||
+        std::find(call_dispatch_.begin(), call_dispatch_.end(), m->topic()) != call_dispatch_.end()) {
+      dispatch(*m);
+      continue;
+    }
+    if (m->topic() == reply_topic_) {
+      bool matched = false;
+      for (size_t i = 0; i < requests.size(); ++i)
+        if (open[i] && m->correlation_id() == correlation[i]) {
+          results[i].response = std::move(m);
+          open[i] = false;
+          --waiting;
+          matched = true;
+          break;
+        }
+      if (!matched) stats_.late_replies.fetch_add(1, std::memory_order_relaxed);
+      continue;
+    }
+    queued_.push_back(std::move(*m));
+  }
+  for (size_t i = 0; i < requests.size(); ++i)
+    if (open[i]) {
+      results[i].error = msgs::ErrorCode::DeadlineExceeded;
+      results[i].error_message = "no response on '" + requests[i].topic + "' within " + std::to_string(timeout.count()) + " ms";
+    }
+  return results;
+}
+
 PublishStatus Node::respond(const Message& request, flatbuffers::FlatBufferBuilder& fbb,
                             msgs::Payload type, flatbuffers::Offset<void> payload) {
   const std::string_view reply_to = view(request.header().reply_to());

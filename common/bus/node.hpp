@@ -106,6 +106,16 @@ class Node {
                   flatbuffers::Offset<void> payload, std::chrono::milliseconds timeout,
                   const std::function<std::optional<std::string>()>& give_up = {});
 
+  // Several requests at once (to different servers): all are published, then the answers are
+  // awaited together until timeout; each may give up on its own (its server died).
+  struct Request {
+    std::string topic;
+    flatbuffers::FlatBufferBuilder* fbb = nullptr;
+    msgs::Payload type = msgs::Payload::NONE;
+    flatbuffers::Offset<void> payload;
+    std::function<std::optional<std::string>()> give_up;
+  };
+  std::vector<CallResult> call_many(std::vector<Request>& requests, std::chrono::milliseconds timeout);
   // Serves requests on topic: handler builds the response into fbb and returns its payload.
   // Exceptions become Error responses; requests past their deadline are dropped and counted.
   struct Reply {

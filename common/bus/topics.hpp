@@ -24,6 +24,12 @@ inline std::string agent_request(std::string_view kind) {
   return "/agent/" + std::string(kind) + "/request";
 }
 
+// Requests to one named process of a kind (fan-out to workers), e.g.
+// "/agent/foreground/worker/fg2/request".
+inline std::string agent_worker_request(std::string_view kind, std::string_view name) {
+  return "/agent/" + std::string(kind) + "/worker/" + std::string(name) + "/request";
+}
+
 inline std::string reply(std::string_view node, uint64_t instance) {
   return "/reply/" + std::string(node) + "/" + hex(instance);
 }

@@ -13,7 +13,7 @@ namespace {
 const std::vector<std::string> kTopKeys = {"bus", "stop_timeout_s", "curve_keys", "allowed_roots", "processes"};
 const std::vector<std::string> kProcessKeys = {
     "name",          "kind",         "executable",          "args",          "env",
-    "host",          "respawn",      "respawn_delay_s",     "respawn_max_delay_s",
+    "host",          "netns",        "respawn",      "respawn_delay_s",     "respawn_max_delay_s",
     "max_respawns",  "stable_after_s", "ready",             "ready_timeout_s",
     "bus_args",      "mock"};
 
@@ -110,6 +110,7 @@ class Reader {
       for (const auto& kv : e) p.env[str(kv.first, "env name")] = str(kv.second, "env value");
     }
     if (n["host"]) p.host = str(n["host"], "host");
+    if (n["netns"]) p.netns = str(n["netns"], "netns");
     if (const auto r = n["respawn"]) {
       const auto policy = parse_respawn_policy(str(r, "respawn"));
       if (!policy) fail(r, who + ": respawn must be never, on-failure or always");

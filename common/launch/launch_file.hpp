@@ -26,6 +26,7 @@ struct ProcessSpec {
   std::vector<std::string> args;
   std::map<std::string, std::string> env;
   std::string host;                 // empty or "localhost": this machine; else started over ssh
+  std::string netns;                // a network namespace on this machine (ip netns exec): a "host" for tests
   RespawnPolicy respawn = RespawnPolicy::OnFailure;
   BackoffConfig backoff;
   Readiness ready = Readiness::Heartbeat;

@@ -110,7 +110,13 @@ std::vector<std::string> Launcher::command_line(const ProcessSpec& spec) const {
       argv.push_back(file_.curve_keys.string());
     }
   }
-  if (is_local(spec.host)) return argv;
+  if (is_local(spec.host)) {
+    if (spec.netns.empty()) return argv;
+    // In a network namespace of this machine: another "host" as far as the bus can tell.
+    std::vector<std::string> in_ns{resolve("ip").empty() ? "ip" : resolve("ip"), "netns", "exec", spec.netns};
+    in_ns.insert(in_ns.end(), argv.begin(), argv.end());
+    return in_ns;
+  }
   // Remote: ssh with a pseudo-terminal, so ending ssh hangs up (and ends) the remote process.
   std::string remote = "exec env";
   for (const auto& [k, v] : spec.env) remote += " " + shell_quote(k + "=" + v);

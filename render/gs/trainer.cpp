@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <unordered_map>
 
@@ -278,6 +279,80 @@ std::vector<Seed> facade_seeds(const scene::Scene& s, const std::vector<TrainIma
   return out;
 }
 
+// The box of object k at frame f (world to object), or none.
+std::optional<Eigen::Isometry3d> box_inverse(const scene::Scene& s, size_t k, int frame) {
+  const auto p = s.objects[k].at(frame);
+  if (!p) return std::nullopt;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = p->center;
+  T.linear() = Eigen::AngleAxisd(p->yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return T.inverse();
+}
+
+bool inside_box(const Eigen::Vector3d& local, const Eigen::Vector3d& size, double margin) {
+  const Eigen::Vector3d h = size / 2;
+  return std::abs(local.x()) < h.x() + margin && std::abs(local.y()) < h.y() + margin && local.z() > -h.z() + 0.05 &&
+         local.z() < h.z() + margin;
+}
+
+// Background seeds that fall inside a labelled box at their frame belong to that object (the
+// facades' upward guess lands on cars too): otherwise hiding the object would leave them.
+void assign_seeds_to_objects(const scene::Scene& s, std::vector<Seed>& seeds) {
+  for (auto& sd : seeds) {
+    if (sd.owner >= 0) continue;
+    for (size_t k = 0; k < s.objects.size(); ++k) {
+      const auto inv = box_inverse(s, k, sd.frame);
+      if (!inv) continue;
+      const Eigen::Vector3d local = *inv * sd.world.cast<double>();
+      if (!inside_box(local, s.objects[k].size_lwh, 0.1)) continue;
+      sd.owner = int(k);
+      sd.position = local.cast<float>();
+      break;
+    }
+  }
+}
+
+// Objects that never move: their boxes are fixed in the world.
+std::vector<std::optional<Eigen::Isometry3d>> static_boxes(const scene::Scene& s) {
+  std::vector<std::optional<Eigen::Isometry3d>> out(s.objects.size());
+  for (size_t k = 0; k < s.objects.size(); ++k) {
+    const auto& t = s.objects[k].track;
+    if (t.empty()) continue;
+    double move = 0;
+    for (const auto& p : t) move = std::max(move, (p.center - t.front().center).norm());
+    if (move < 0.2) out[k] = box_inverse(s, k, t.front().frame);
+  }
+  return out;
+}
+
+// Background Gaussians that drifted into a parked object's box join the object (its frame).
+int adopt_into_static_objects(Gaussians& g, std::vector<int>& owner, const scene::Scene& s,
+                              const std::vector<std::optional<Eigen::Isometry3d>>& boxes) {
+  int moved = 0;
+  for (size_t i = 0; i < g.size(); ++i) {
+    if (owner[i] >= 0) continue;
+    float* p = g.at(i);
+    const Eigen::Vector3d w(p[kPosX], p[kPosY], p[kPosZ]);
+    for (size_t k = 0; k < boxes.size(); ++k) {
+      if (!boxes[k]) continue;
+      const Eigen::Vector3d local = *boxes[k] * w;
+      if (!inside_box(local, s.objects[k].size_lwh, 0.05)) continue;
+      const Eigen::Matrix3f Rinv = boxes[k]->linear().cast<float>();
+      p[kPosX] = float(local.x()), p[kPosY] = float(local.y()), p[kPosZ] = float(local.z());
+      const Eigen::Quaternionf q = Eigen::Quaternionf(Rinv) * Eigen::Quaternionf(p[kRotW], p[kRotX], p[kRotY], p[kRotZ]);
+      p[kRotW] = q.w(), p[kRotX] = q.x(), p[kRotY] = q.y(), p[kRotZ] = q.z();
+      for (int c = 0; c < 3; ++c) {
+        const Eigen::Vector3f kk = Rinv * Eigen::Vector3f(p[kColor + 4 * c + 1], p[kColor + 4 * c + 2], p[kColor + 4 * c + 3]);
+        p[kColor + 4 * c + 1] = kk.x(), p[kColor + 4 * c + 2] = kk.y(), p[kColor + 4 * c + 3] = kk.z();
+      }
+      owner[i] = int(k);
+      ++moved;
+      break;
+    }
+  }
+  return moved;
+}
+
 }  // namespace
 
 scene::Camera scaled_camera(const scene::Camera& c, int max_width) {
@@ -340,6 +415,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
   std::vector<Seed> seeds = lidar_seeds(s, path);
   const auto facades = facade_seeds(s, images);
   seeds.insert(seeds.end(), facades.begin(), facades.end());
+  assign_seeds_to_objects(s, seeds);
   std::mt19937_64 rng(o.seed);
   if (seeds.empty()) {
     std::uniform_real_distribution<double> u(-1, 1);
@@ -385,6 +461,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
   }
   const bool learn_exposure = o.exposure;
   std::vector<float> screen_accum(model.gaussians.size(), 0.0f), denom(model.gaussians.size(), 0.0f);
+  const auto parked = static_boxes(s);
 
   Rasterizer raster;
   raster.threads = o.threads;
@@ -539,6 +616,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
         }
       }
       remove.resize(G.size(), 0);
+      adopt_into_static_objects(G, model.owner, s, parked);
       // Compact the arrays, the optimiser's moments with them.
       std::vector<float>& m = adam.m();
       std::vector<float>& v = adam.v();
