@@ -150,9 +150,11 @@ agents::AgentOutcome outcome_of(const std::string& kind, const bus::CallResult& 
         result.error == msgs::ErrorCode::Unavailable && result.error_message.find("agent failed") != std::string::npos
             ? result.error_message
             : "the " + kind + " agent did not answer (" + result.error_message + "); is chatsim-" + kind + " running on this bus?");
-  if (const auto* err = result.response->payload<msgs::Error>())
-    return agents::AgentOutcome::failure(agents::ErrorKind::Internal,
-                                         "the " + kind + " agent failed: " + std::string(bus::view(err->message())));
+  if (const auto* err = result.response->payload<msgs::Error>()) {
+    std::string why(bus::view(err->message()));
+    if (!bus::view(err->cause()).empty()) why += " (" + std::string(bus::view(err->cause())) + ")";
+    return agents::AgentOutcome::failure(agents::ErrorKind::Internal, "the " + kind + " agent failed: " + why);
+  }
   const auto* resp = result.response->payload<msgs::AgentResponse>();
   if (resp == nullptr)
     return agents::AgentOutcome::failure(agents::ErrorKind::Internal, "the " + kind + " agent sent no AgentResponse");

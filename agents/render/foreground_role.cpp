@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include <opencv2/imgproc.hpp>
+#include <unistd.h>
 
 #include "agents/core/scene_cache.hpp"
 #include "agents/foreground/asset_bank.hpp"
@@ -50,8 +51,10 @@ r::light::LightEstimate scene_light(const scene::Scene& s) {
   json j = est.to_json("sky.exr");
   j["scale"] = est.scale;
   j["frame"] = frame;
-  std::ofstream(dir / "light.json.part") << j.dump(1) << "\n";
-  fs::rename(dir / "light.json.part", lj);
+  // Workers on other hosts may estimate at the same time: each writes its own temporary file.
+  const fs::path tmp = dir / (".light.json.part" + std::to_string(getpid()));
+  std::ofstream(tmp) << j.dump(1) << "\n";
+  fs::rename(tmp, lj);
   return est;
 }
 

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <limits>
 
+#include <unistd.h>
+
 namespace chatsim::render::gs {
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -155,7 +157,7 @@ void RadianceField::save(const fs::path& file) const {
   h["image_correction"] = imgs;
   const std::string header = h.dump();
   if (!file.parent_path().empty()) fs::create_directories(file.parent_path());
-  const fs::path tmp = file.string() + ".part";
+  const fs::path tmp = file.string() + ".part" + std::to_string(getpid());
   {
     std::ofstream out(tmp, std::ios::binary);
     const uint64_t len = header.size();
