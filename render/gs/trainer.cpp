@@ -578,7 +578,16 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
       const size_t count = G.size();
       std::vector<size_t> grow;
       for (size_t i = 0; i < count; ++i)
-        if (denom[i] > 0 && screen_accum[i] / denom[i] > 2e-4f) grow.push_back(i);
+        if (denom[i] > 0 && screen_accum[i] / denom[i] > o.densify_threshold) grow.push_back(i);
+      if (std::getenv("CHATSIM_DEBUG_TRAIN") != nullptr) {
+        std::vector<float> avg;
+        for (size_t i = 0; i < count; ++i)
+          if (denom[i] > 0) avg.push_back(screen_accum[i] / denom[i]);
+        std::sort(avg.begin(), avg.end());
+        if (!avg.empty())
+          std::fprintf(stderr, "densify it %d: %zu seen, grad p50 %.2e p90 %.2e p99 %.2e, %zu over %.1e\n", it, avg.size(),
+                       avg[avg.size() / 2], avg[avg.size() * 9 / 10], avg[avg.size() * 99 / 100], grow.size(), o.densify_threshold);
+      }
       const size_t room = max_gaussians > count ? max_gaussians - count : 0;
       if (grow.size() > room) {
         std::partial_sort(grow.begin(), grow.begin() + long(room), grow.end(), [&](size_t a, size_t b) {

@@ -20,6 +20,7 @@ struct TrainOptions {
   bool pose_refinement = true;
   int holdout = 0;                  // hold out frames with index % holdout == holdout / 2 (0: none)
   size_t max_gaussians = 0;         // 0: the preset's
+  float densify_threshold = 2e-4f;  // mean screen-space gradient (NDC) above which a Gaussian grows
   uint64_t seed = 1;
   int threads = 0;
   // iteration, total, training loss (L1), PSNR of the last image (dB), Gaussians.

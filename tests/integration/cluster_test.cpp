@@ -85,7 +85,7 @@ RunResult run_on(const std::string& yaml, const fs::path& dir, const fs::path& s
   std::string endpoint = test_support::read_file(ep);
   endpoint.erase(endpoint.find_last_not_of(" \n") + 1);
   std::this_thread::sleep_for(2s);  // every worker's heartbeat reaches the manager
-  const std::string cmd = "CHATSIM_CACHE=" + (dir / "cache").string() + " " + bin("chatsim") + " run --bus " + endpoint +
+  const std::string cmd = "CHATSIM_CACHE=" + (dir / "cache").string() + " timeout 300 " + bin("chatsim") + " run --timeout-s 240 --bus " + endpoint +
                           " --scene " + scene.string() + " --out " + out.string() +
                           " 'Add a red car 12 m ahead and move the view 1 m to the left' > " + (dir / "run.log").string() + " 2>&1";
   r.ok = std::system(cmd.c_str()) == 0;
