@@ -20,6 +20,8 @@ namespace fs = std::filesystem;
 struct TrainArgs {
   std::string scene, out, preset = "fast";
   int holdout = 0, iterations = 0, max_width = 0;
+  size_t max_gaussians = 0;
+  float densify_threshold = 2e-4f;
   bool no_exposure = false, no_pose = false;
   uint64_t seed = 1;
 };
@@ -37,6 +39,8 @@ int run_train(const TrainArgs& a) {
   o.holdout = a.holdout;
   o.max_iterations = a.iterations;
   o.max_width = a.max_width;
+  o.max_gaussians = a.max_gaussians;
+  o.densify_threshold = a.densify_threshold;
   o.exposure = !a.no_exposure;
   o.pose_refinement = !a.no_pose;
   o.seed = a.seed;
@@ -184,6 +188,9 @@ void add_radiance_commands(CLI::App& app, int& result) {
   train->add_option("--holdout", ta->holdout, "hold out frames with index % N == N/2 for evaluation (0: none)")->check(CLI::Range(0, 1000));
   train->add_option("--iterations", ta->iterations, "at most this many iterations (default: the preset's)")->check(CLI::Range(1, 1000000));
   train->add_option("--max-width", ta->max_width, "downscale wider images to this width (default: the preset's)")->check(CLI::Range(16, 8192));
+  train->add_option("--max-gaussians", ta->max_gaussians, "at most this many Gaussians (default: the preset's)");
+  train->add_option("--densify-threshold", ta->densify_threshold, "screen-space gradient (NDC) that makes a Gaussian grow")
+      ->check(CLI::PositiveNumber);
   train->add_flag("--no-exposure", ta->no_exposure, "ablation: ignore exposure_s and learn no exposure corrections");
   train->add_flag("--no-pose-refinement", ta->no_pose, "ablation: trust the recorded camera poses");
   train->add_option("--seed", ta->seed, "random seed");

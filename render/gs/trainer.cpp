@@ -38,6 +38,7 @@ struct TrainImage {
   cv::Mat rgb;                // CV_8UC3 at training resolution
   double exposure = 1.0;      // known exposure (1: unknown or not used)
   double time = 0;
+  std::vector<Eigen::Vector3f> lidar;  // world points this image sees (depth supervision)
 };
 
 double oetf_slope(double x) { return x <= 0.0031308 ? 12.92 : 1.055 / 2.4 * std::pow(x, 1.0 / 2.4 - 1.0); }
@@ -143,6 +144,56 @@ std::vector<TrainImage> load_images(const scene::Scene& s, const TrainOptions& o
     }
   }
   return out;
+}
+
+// LiDAR points of each image's frame, placed at the image's time (points on a labelled object
+// move with it), a sample of those in front of the camera: they supervise rendered depth.
+void attach_lidar(const scene::Scene& s, std::vector<TrainImage>& images, uint64_t seed) {
+  std::map<int, std::vector<Eigen::Vector3d>> world;
+  std::map<int, std::vector<int>> owner;
+  for (const auto& f : s.frames) {
+    if (f.lidar.empty()) continue;
+    for (const auto& lp : scene::read_lidar(s.dir / f.lidar)) {
+      const Eigen::Vector3d w = f.ego_to_world * lp.xyz.cast<double>();
+      int own = -1;
+      for (size_t k = 0; k < s.objects.size() && own < 0; ++k)
+        if (const auto p = s.objects[k].at(f.index)) {
+          Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+          T.translation() = p->center;
+          T.linear() = Eigen::AngleAxisd(p->yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+          const Eigen::Vector3d q = T.inverse() * w;
+          const Eigen::Vector3d h = s.objects[k].size_lwh / 2;
+          if (std::abs(q.x()) < h.x() && std::abs(q.y()) < h.y() && std::abs(q.z()) < h.z()) own = int(k);
+        }
+      world[f.index].push_back(w);
+      owner[f.index].push_back(own);
+    }
+  }
+  std::mt19937_64 rng(seed);
+  for (auto& im : images) {
+    const auto it = world.find(im.frame);
+    if (it == world.end()) continue;
+    const auto& own = owner[im.frame];
+    const scene::Frame* fr = nullptr;
+    for (const auto& f : s.frames)
+      if (f.index == im.frame) fr = &f;
+    std::vector<Eigen::Vector3f> pts;
+    for (size_t i = 0; i < it->second.size(); ++i) {
+      Eigen::Vector3d w = it->second[i];
+      if (own[i] >= 0) {  // on an object: where the object is at the image's time
+        const auto& o = s.objects[size_t(own[i])];
+        const auto a = object_pose(s, o, fr->timestamp_s), b = object_pose(s, o, im.time);
+        if (!a || !b) continue;
+        w = *b * (a->inverse() * w);
+      }
+      const auto pr = scene::project(im.cam, im.pose, w, 1.0);
+      if (!pr || !pr->in_image || pr->depth > 60) continue;
+      pts.push_back(w.cast<float>());
+    }
+    std::shuffle(pts.begin(), pts.end(), rng);
+    if (pts.size() > 4000) pts.resize(4000);
+    im.lidar = std::move(pts);
+  }
 }
 
 // --- initialisation ---
@@ -379,6 +430,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
   std::vector<TrainImage> images = load_images(s, o, max_width, &report.held_out);
   if (images.empty()) throw std::invalid_argument(s.dir.string() + ": no images to train on");
   report.images = int(images.size());
+  if (o.depth_weight > 0) attach_lidar(s, images, o.seed);
   report.width = images.front().cam.width;
   report.height = images.front().cam.height;
 
@@ -484,7 +536,13 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
     if (o.pose_refinement) pose = pose * model.camera_correction[im.camera].transform() * model.image_correction[key].transform();
     std::vector<int> source;
     const Gaussians placed = model.placed(s, im.time, {}, &source);
-    const GsView view = make_view(im.cam, pose);
+    // Coarse to fine: half resolution for the first part of training (a quarter of the pixels).
+    const bool coarse = it <= int(o.coarse_share * float(iterations)) && im.cam.width >= 128;
+    const scene::Camera cam = coarse ? scaled_camera(im.cam, im.cam.width / 2) : im.cam;
+    cv::Mat coarse_rgb;
+    if (coarse) cv::resize(im.rgb, coarse_rgb, cv::Size(cam.width, cam.height), 0, 0, cv::INTER_AREA);
+    const cv::Mat& target_rgb = coarse ? coarse_rgb : im.rgb;
+    const GsView view = make_view(cam, pose);
     const GsImage out = raster.forward(placed, &model.sky, view);
     // L1 in sRGB through the exposure; dL/dradiance per pixel.
     const double e = im.exposure * std::exp(double(model.log_exposure[key]));
@@ -495,7 +553,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
     for (int y = 0; y < out.radiance.rows; ++y)
       for (int x = 0; x < out.radiance.cols; ++x) {
         const cv::Vec3f r = out.radiance.at<cv::Vec3f>(y, x);
-        const cv::Vec3b t8 = im.rgb.at<cv::Vec3b>(y, x);
+        const cv::Vec3b t8 = target_rgb.at<cv::Vec3b>(y, x);
         cv::Vec3f& g = d_rad.at<cv::Vec3f>(y, x);
         for (int c = 0; c < 3; ++c) {
           const double lin = e * r[c];
@@ -519,7 +577,32 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
     if (recent_psnr.size() > 100) recent_psnr.erase(recent_psnr.begin());
     GsGrads grads;
     grads.reset(placed.size(), size_t(model.sky.width() * model.sky.height()));
-    raster.backward(placed, &model.sky, d_rad, cv::Mat(), cv::Mat(), grads);
+    // LiDAR depth: expected depth (D / A) at each point's pixel against its camera depth,
+    // relative L1. The point's own depth moves with the pose, too.
+    cv::Mat d_depth, d_alpha;
+    Eigen::Matrix<float, 6, 1> lidar_pose_grad = Eigen::Matrix<float, 6, 1>::Zero();
+    if (o.depth_weight > 0 && !im.lidar.empty()) {
+      d_depth = cv::Mat(out.depth.size(), CV_32F, cv::Scalar(0));
+      d_alpha = cv::Mat(out.depth.size(), CV_32F, cv::Scalar(0));
+      const Eigen::Matrix3f Rt = view.rotation.transpose();
+      const float w = float(o.depth_weight) / float(im.lidar.size());
+      for (const auto& X : im.lidar) {
+        const Eigen::Vector3f p = Rt * (X - view.center);
+        if (p.z() < 0.5f) continue;
+        const int u = int(std::lround(view.fx * p.x() / p.z() + view.cx)), v = int(std::lround(view.fy * p.y() / p.z() + view.cy));
+        if (u < 0 || v < 0 || u >= out.depth.cols || v >= out.depth.rows) continue;
+        const float A = out.alpha.at<float>(v, u), D = out.depth.at<float>(v, u);
+        if (A < 0.5f) continue;
+        const float e = D / A - p.z();
+        const float g = (e > 0 ? w : -w) / p.z();
+        d_depth.at<float>(v, u) += g / A;
+        d_alpha.at<float>(v, u) += -g * D / (A * A);
+        // d(-z)/d twist: z' = z - (w x p).z - t.z -> dz/dw = (-p.y, p.x, 0), dz/dt = (0, 0, -1).
+        lidar_pose_grad += -g * (Eigen::Matrix<float, 6, 1>() << -p.y(), p.x(), 0, 0, 0, -1).finished();
+      }
+    }
+    raster.backward(placed, &model.sky, d_rad, d_depth, d_alpha, grads);
+    grads.pose += lidar_pose_grad;
     // Placed gradients back to the model (objects: from the world into their frames).
     std::vector<float> g(model.gaussians.p.size(), 0.0f);
     std::vector<std::optional<Eigen::Isometry3f>> opose(model.objects.size());
@@ -568,8 +651,10 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
       st[2] = 0.999f * st[2] + 0.001f * float(d_log_e * d_log_e);
       model.log_exposure[key] -= 2e-3f * st[1] / (std::sqrt(st[2]) + 1e-12f);
     }
-    if (o.pose_refinement && it > iterations / 20) {
-      cam_twist[im.camera].step(grads.pose, 2e-4f, 2e-3f);
+    if (o.pose_refinement && it > int(o.pose_start * float(iterations))) {
+      // The first camera is the rig's reference (its calibration defines the rig): only the
+      // others get a per-camera correction; every image gets its own small one.
+      if (im.camera != s.cameras.front().name) cam_twist[im.camera].step(grads.pose, 2e-4f, 2e-3f);
       img_twist[key].step(grads.pose, 1e-4f, 1e-3f);
     }
     // Densify and prune.

@@ -18,6 +18,9 @@ struct TrainOptions {
   int max_width = 0;                // images wider than this are downscaled (0: the preset's)
   bool exposure = true;             // use exposure_s and learn per-image corrections
   bool pose_refinement = true;
+  float pose_start = 0.05f;         // share of the iterations before poses are refined
+  float coarse_share = 0.3f;        // share of the iterations trained at half resolution
+  double depth_weight = 0.1;        // LiDAR depth supervision (relative L1) against the image loss; 0: none
   int holdout = 0;                  // hold out frames with index % holdout == holdout / 2 (0: none)
   size_t max_gaussians = 0;         // 0: the preset's
   float densify_threshold = 2e-4f;  // mean screen-space gradient (NDC) above which a Gaussian grows
