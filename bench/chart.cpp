@@ -8,6 +8,17 @@
 #include <opencv2/imgproc.hpp>
 
 namespace chatsim::bench {
+namespace {
+
+// The title on one line, smaller when it would not fit.
+void put_title(cv::Mat& img, const std::string& title, int left, const cv::Scalar& ink) {
+  double scale = 0.7;
+  int baseline = 0;
+  while (scale > 0.35 && cv::getTextSize(title, cv::FONT_HERSHEY_SIMPLEX, scale, 2, &baseline).width > img.cols - left - 10) scale -= 0.05;
+  cv::putText(img, title, {left, 35}, cv::FONT_HERSHEY_SIMPLEX, scale, ink, scale > 0.5 ? 2 : 1, cv::LINE_AA);
+}
+
+}  // namespace
 
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& pts) {
   const int w = 900, h = 600, left = 90, right = 40, top = 60, bottom = 80;
@@ -23,14 +34,23 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   x0 -= pad;
   x1 += pad;
   if (!spec.log_x) x0 = std::max(0.0, x0);
-  const double y0 = 0.0, y1 = 1.05;
+  // Shares (0..1) keep a fixed axis; anything else (dB, degrees) gets one fitted to the data.
+  double y0 = 0.0, y1 = 1.05;
+  double lo = 1e300, hi = -1e300;
+  for (const auto& p : pts) lo = std::min(lo, p.y), hi = std::max(hi, p.y);
+  if (!pts.empty() && (lo < 0 || hi > 1)) {
+    const double ypad = std::max(0.5, (hi - lo) * 0.15);
+    y0 = lo - ypad;
+    y1 = hi + ypad;
+  }
   auto px = [&](double x) { return int(left + (tx(x) - x0) / (x1 - x0) * (w - left - right)); };
   auto py = [&](double y) { return int(h - bottom - (y - y0) / (y1 - y0) * (h - top - bottom)); };
   const cv::Scalar ink(40, 40, 40), grid(225, 225, 225);
   for (int k = 0; k <= 10; ++k) {
-    const double y = k / 10.0;
+    const double y = y0 + (y1 - y0) * k / 10.0;
     cv::line(img, {left, py(y)}, {w - right, py(y)}, grid, 1);
-    cv::putText(img, cv::format("%.1f", y), {left - 45, py(y) + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
+    cv::putText(img, cv::format(y1 - y0 < 5 ? "%.2f" : "%.1f", y), {left - 55, py(y) + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
+                cv::LINE_AA);
   }
   for (int k = 0; k <= 5; ++k) {
     const double t = x0 + (x1 - x0) * k / 5;
@@ -41,7 +61,7 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
                 ink, 1, cv::LINE_AA);
   }
   cv::rectangle(img, {left, top}, {w - right, h - bottom}, ink, 1);
-  cv::putText(img, spec.title, {left, 35}, cv::FONT_HERSHEY_SIMPLEX, 0.7, ink, 2, cv::LINE_AA);
+  put_title(img, spec.title, left, ink);
   cv::putText(img, spec.x_label + (spec.log_x ? " (log)" : ""), {w / 2 - 120, h - 25}, cv::FONT_HERSHEY_SIMPLEX, 0.55, ink, 1,
               cv::LINE_AA);
   cv::Mat ylabel(30, h - top - bottom, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -58,6 +78,55 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
     const int dx = c.x + 9 + text.width > w - 5 ? -9 - text.width : 9;
     cv::putText(img, pts[i].label, c + cv::Point(dx, -8 + int(i % 3) * 12), cv::FONT_HERSHEY_SIMPLEX, 0.45, colors[i % 6], 1,
                 cv::LINE_AA);
+  }
+  std::filesystem::create_directories(std::filesystem::absolute(file).parent_path());
+  if (!cv::imwrite(file.string(), img)) throw std::runtime_error("could not write the chart " + file.string());
+}
+
+void write_stacked_bars_png(const std::filesystem::path& file, const std::string& title, const std::string& x_label,
+                            const std::vector<StackedBar>& bars) {
+  const int w = 1000, left = 260, right = 40, top = 60, bar_h = 34, gap = 18, legend_h = 40;
+  const int h = top + int(bars.size()) * (bar_h + gap) + 60 + legend_h;
+  cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
+  const cv::Scalar ink(40, 40, 40), grid(225, 225, 225);
+  const cv::Scalar colors[] = {{200, 80, 30}, {30, 140, 40}, {30, 60, 200}, {160, 40, 160}, {20, 150, 200}, {90, 90, 90}};
+  double x1 = 1e-9;
+  std::vector<std::string> stages;
+  for (const auto& b : bars) {
+    double total = 0;
+    for (const auto& [stage, v] : b.segments) {
+      total += v;
+      if (std::find(stages.begin(), stages.end(), stage) == stages.end()) stages.push_back(stage);
+    }
+    x1 = std::max(x1, total * 1.1);
+  }
+  auto px = [&](double x) { return int(left + x / x1 * (w - left - right)); };
+  const int bottom_axis = top + int(bars.size()) * (bar_h + gap);
+  for (int k = 0; k <= 5; ++k) {
+    const double x = x1 * k / 5;
+    cv::line(img, {px(x), top}, {px(x), bottom_axis}, grid, 1);
+    cv::putText(img, cv::format(x < 10 ? "%.1f" : "%.0f", x), {px(x) - 12, bottom_axis + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                ink, 1, cv::LINE_AA);
+  }
+  put_title(img, title, 20, ink);
+  cv::putText(img, x_label, {w / 2 - 60, bottom_axis + 42}, cv::FONT_HERSHEY_SIMPLEX, 0.55, ink, 1, cv::LINE_AA);
+  for (size_t i = 0; i < bars.size(); ++i) {
+    const int y = top + int(i) * (bar_h + gap);
+    cv::putText(img, bars[i].label, {10, y + bar_h / 2 + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
+    double at = 0;
+    for (const auto& [stage, v] : bars[i].segments) {
+      const size_t c = size_t(std::find(stages.begin(), stages.end(), stage) - stages.begin());
+      cv::rectangle(img, {px(at), y}, {std::max(px(at) + 1, px(at + v)), y + bar_h}, colors[c % 6], cv::FILLED);
+      at += v;
+    }
+    cv::putText(img, cv::format("%.1f s", at), {px(at) + 6, y + bar_h / 2 + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
+                cv::LINE_AA);
+  }
+  int lx = 20;
+  for (size_t c = 0; c < stages.size(); ++c) {
+    cv::rectangle(img, {lx, h - legend_h}, {lx + 14, h - legend_h + 14}, colors[c % 6], cv::FILLED);
+    cv::putText(img, stages[c], {lx + 20, h - legend_h + 12}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
+    lx += 30 + 9 * int(stages[c].size());
   }
   std::filesystem::create_directories(std::filesystem::absolute(file).parent_path());
   if (!cv::imwrite(file.string(), img)) throw std::runtime_error("could not write the chart " + file.string());

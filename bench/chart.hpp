@@ -3,6 +3,7 @@
 // category, so a person can see the trade-off at a glance.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace chatsim::bench {
@@ -22,5 +23,14 @@ struct ChartSpec {
 
 // Writes a PNG; throws std::runtime_error when it cannot.
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& points);
+
+// One bar per run, split into named parts (e.g. seconds per pipeline stage), stacked left to
+// right in the order given; the same name has the same colour in every bar.
+struct StackedBar {
+  std::string label;
+  std::vector<std::pair<std::string, double>> segments;
+};
+void write_stacked_bars_png(const std::filesystem::path& file, const std::string& title, const std::string& x_label,
+                            const std::vector<StackedBar>& bars);
 
 }  // namespace chatsim::bench

@@ -1,5 +1,10 @@
 #include "processes/agent_process.hpp"
 
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <thread>
+
 #include <spdlog/spdlog.h>
 
 #include "agents/core/agent_registry.hpp"
@@ -245,8 +250,41 @@ agents::manager::FanoutCaller bus_fanout_caller(bus::Node& node, std::chrono::mi
   };
 }
 
+namespace {
+
+// A request handler can run for minutes (rendering) and only returns to the loop that checks
+// for signals when it is done. The watchdog keeps the promise to stop within a second of
+// SIGINT/SIGTERM anyway: it leaves without finishing the request, which is safe because every
+// output is written under a temporary name and renamed when complete.
+class StopWatchdog {
+ public:
+  explicit StopWatchdog(const std::atomic<bool>& stop)
+      : thread_([this, &stop] {
+          using namespace std::chrono_literals;
+          while (!stop.load() && !finished_.load()) std::this_thread::sleep_for(20ms);
+          for (int i = 0; i < 45 && !finished_.load(); ++i) std::this_thread::sleep_for(20ms);
+          if (finished_.load()) return;
+          spdlog::warn("stopping in the middle of a request (signal {}): its outputs are left unwritten", stop_signal());
+          spdlog::default_logger()->flush();
+          std::_Exit(exit_code::kOk);
+        }) {}
+  ~StopWatchdog() {
+    left_loop();
+    thread_.join();
+  }
+  // The serving loop has returned: shutting down from here on is quick and needs no watchdog.
+  void left_loop() { finished_.store(true); }
+
+ private:
+  std::atomic<bool> finished_{false};
+  std::thread thread_;
+};
+
+}  // namespace
+
 int serve_agent(const AgentProcessOptions& options, const std::string& kind, const AgentFactory& make) {
   const auto& stop = install_stop_signals();
+  StopWatchdog watchdog(stop);
   bus::NodeOptions no;
   no.kind = kind;
   no.name = options.name.empty() ? no.kind : options.name;
@@ -281,6 +319,7 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
     node.start();
     spdlog::info("'{}' ({}) serving on bus {}", no.name, no.kind, no.bus);
     node.spin(stop);
+    watchdog.left_loop();
     spdlog::info("stopping (signal {})", stop_signal());
     node.shutdown();
   } catch (const bus::BusError& e) {

@@ -7,9 +7,39 @@
 #include "render/image_io.hpp"
 #include "render/inpaint/deletion.hpp"
 
+#include <opencv2/imgproc.hpp>
+
 namespace chatsim::agents::render {
 namespace fs = std::filesystem;
 using chatsim::render::inpaint::DeletionImage;
+
+namespace {
+
+// The model's view without the deleted objects, rendered only inside `roi` (a camera cropped
+// to it) and placed in full-size images: radiance and depth, zero outside.
+struct Behind {
+  cv::Mat radiance, depth;
+};
+Behind render_behind(const chatsim::render::gs::RadianceField& model, const scene::Scene& s, const DeletionImage& im,
+                     const std::vector<std::string>& hidden, const cv::Rect& roi) {
+  Behind b{cv::Mat(im.cam.height, im.cam.width, CV_32FC3, cv::Scalar::all(0)), cv::Mat(im.cam.height, im.cam.width, CV_32F, cv::Scalar(0))};
+  if (roi.empty()) return b;
+  scene::Camera crop = im.cam;
+  crop.width = roi.width, crop.height = roi.height;
+  crop.cx -= roi.x, crop.cy -= roi.y;
+  const auto out = model.render(s, crop, im.pose, im.time, hidden);
+  out.radiance.copyTo(b.radiance(roi));
+  out.depth.copyTo(b.depth(roi));
+  return b;
+}
+
+cv::Rect padded_bounds(const cv::Mat& mask, int pad) {
+  const cv::Rect r = cv::boundingRect(mask);
+  if (r.empty()) return r;
+  return cv::Rect(r.x - pad, r.y - pad, r.width + 2 * pad, r.height + 2 * pad) & cv::Rect(0, 0, mask.cols, mask.rows);
+}
+
+}  // namespace
 
 AgentOutcome deletion_inpaint(const AgentCall& call) {
   try {
@@ -35,15 +65,17 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
     chatsim::render::inpaint::DeletionStats stats;
     if (!job.removed.empty()) {
       const auto sources = chatsim::render::inpaint::scene_images(*s);
-      chatsim::render::inpaint::BackgroundRenderer behind;
-      if (model)
-        behind = [&](const DeletionImage& im, const std::vector<std::string>& hidden) {
-          return model->render(*s, im.cam, im.pose, im.time, hidden).radiance;
-        };
       // Follow the deleted objects' shadows with the scene's estimated sun.
       chatsim::render::inpaint::DeletionOptions opts;
       const auto light = scene_light(*s);
       if (light.sunny) opts.sun_direction = light.sky.sun_direction.normalized().cast<double>();
+      chatsim::render::inpaint::BackgroundRenderer behind;
+      if (model)
+        behind = [&](const DeletionImage& im, const std::vector<std::string>& hidden) {
+          // Only where the deletion needs it (the caller uses the pixels it could not fill).
+          const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, hidden, opts);
+          return render_behind(*model, *s, im, hidden, padded_bounds(mask, 2)).radiance;
+        };
       stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
     }
     for (const auto& im : targets) {
@@ -55,7 +87,8 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       cv::Mat depth = chatsim::render::read_float_image(d);
       if (model && !job.removed.empty()) {
         const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, job.removed);
-        if (cv::countNonZero(mask) > 0) model->render(*s, im.cam, im.pose, im.time, job.removed).depth.copyTo(depth, mask);
+        if (cv::countNonZero(mask) > 0)
+          render_behind(*model, *s, im, job.removed, padded_bounds(mask, 2)).depth.copyTo(depth, mask);
       }
       chatsim::render::write_exr(depth_file(job.out, im.camera, im.frame), depth);
     }

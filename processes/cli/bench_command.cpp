@@ -125,6 +125,7 @@ void add_bench_command(CLI::App& app, int& result) {
   bag->add_option("--seconds", bag_args->config.seconds, "stream length")->check(CLI::PositiveNumber);
   bag->callback([bag_args, &result] { result = run_bag_bench(*bag_args); });
   add_render_bench_commands(*bench, result);
+  add_e2e_bench_command(*bench, result);
 }
 
 }  // namespace chatsim::cli

@@ -23,5 +23,6 @@ void add_eval_deletion_command(CLI::App& eval, int& result);
 void add_run_commands(CLI::App& app, int& result);  // run, chat
 void add_serve_command(CLI::App& app, int& result);
 void add_render_bench_commands(CLI::App& bench, int& result);  // bench foreground, light, deletion, nvs
+void add_e2e_bench_command(CLI::App& bench, int& result);       // bench e2e
 
 }  // namespace chatsim::cli

@@ -19,6 +19,7 @@ int run_eval_deletion(const EvalDeletionArgs& a) {
   try {
     const auto s = scene::load_scene(a.scene);
     render::inpaint::DeletionEvalOptions o;
+    o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
     o.objects = a.objects;
     o.max_objects = a.max_objects;
     o.save_dir = a.save;

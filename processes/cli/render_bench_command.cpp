@@ -111,6 +111,7 @@ struct DeletionArgs {
 int run_deletion(const DeletionArgs& a) {
   const auto s = scene::load_scene(a.scene);
   render::inpaint::DeletionEvalOptions o;
+  o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
   o.max_objects = a.max_objects;
   o.save_dir = a.save;
   const json r = render::inpaint::evaluate_deletion(s, o);

@@ -89,11 +89,35 @@ struct GroundMap {
   double x0 = 0, y0 = 0, res = 0.04, z = 0;
   cv::Mat radiance;  // CV_32FC3
   cv::Mat seen;      // CV_8UC1
+  cv::Mat valid;     // CV_8UC1: seen, or filled from what was seen
   bool contains(double x, double y) const {
     const double u = (x - x0) / res, v = (y - y0) / res;
-    return u >= 0 && v >= 0 && u < radiance.cols - 1 && v < radiance.rows - 1;
+    return u >= 0 && v >= 0 && u < radiance.cols - 1 && v < radiance.rows - 1 &&
+           valid.at<uchar>(int(v + 0.5), int(u + 0.5)) != 0;
   }
 };
+
+// Where labelled objects that are not deleted stand in front of a deleted one: those pixels
+// show the nearer object, which stays (a car hidden behind a truck leaves the truck alone).
+cv::Mat nearer_objects_mask(const scene::Scene& s, const DeletionImage& im, const scene::ObjectTrack& deleted,
+                            const std::vector<std::string>& ids) {
+  cv::Mat mask(im.cam.height, im.cam.width, CV_8U, cv::Scalar(0));
+  const auto p = at_time(s, deleted, im.time);
+  if (!p) return mask;
+  const Eigen::Isometry3d w2c = im.pose.inverse();
+  const double depth = (w2c * p->center).z();
+  for (const auto& other : s.objects) {
+    if (std::find(ids.begin(), ids.end(), other.id) != ids.end()) continue;
+    const auto q = at_time(s, other, im.time);
+    if (!q) continue;
+    const double d = (w2c * q->center).z();
+    if (d <= 0.1 || d >= depth) continue;
+    std::vector<Eigen::Vector3d> pts;
+    for (const auto& c : scene::box_corners(q->center, other.size_lwh, q->yaw)) pts.push_back(c);
+    fill_projected(mask, im, pts, 0);
+  }
+  return mask;
+}
 
 }  // namespace
 
@@ -140,6 +164,9 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
         xmin = std::min(xmin, c.x()), xmax = std::max(xmax, c.x()), ymin = std::min(ymin, c.y()), ymax = std::max(ymax, c.y());
         zmin = std::min(zmin, c.z());
       }
+    // A ring of ground around the outline that the views do see: the exemplar fill continues
+    // its texture, markings and kerbs (a parked car's own footprint is never seen).
+    xmin -= o.context_m, ymin -= o.context_m, xmax += o.context_m, ymax += o.context_m;
     GroundMap gm;
     gm.res = std::max(o.bev_resolution_m, std::sqrt((xmax - xmin) * (ymax - ymin) / 2.0e6));  // at most ~2M cells
     gm.x0 = xmin, gm.y0 = ymin, gm.z = zmin;
@@ -187,12 +214,14 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
     all_cells += double(w) * h;
     // What nobody saw: exemplar fill in the bird's-eye view.
     const cv::Mat hole = gm.seen == 0;
+    gm.valid = gm.seen.clone();
     if (cv::countNonZero(hole) > 0 && cv::countNonZero(gm.seen) > 0) {
       // Matching in sqrt space weighs dark asphalt and bright markings more evenly.
       cv::Mat root;
       cv::sqrt(gm.radiance, root);
       root = exemplar_inpaint(root, hole, {9, 60});
       gm.radiance = root.mul(root);
+      gm.valid.setTo(255);
     }
     maps.push_back(gm);
   }
@@ -204,7 +233,8 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
     for (size_t k = 0, m = 0; k < ids.size(); ++k) {
       const auto* obj = s.object(ids[k]);
       if (obj == nullptr || obj->track.empty()) continue;
-      const cv::Mat mk = deletion_mask(s, im, {ids[k]}, o);
+      cv::Mat mk = deletion_mask(s, im, {ids[k]}, o);
+      mk.setTo(0, nearer_objects_mask(s, im, *obj, ids));
       owner.setTo(int(m), mk & (owner < 0));
       mask |= mk;
       ++m;

@@ -32,6 +32,7 @@ struct DeletionImage {
 struct DeletionOptions {
   double bev_resolution_m = 0.04;
   double margin_m = 0.8;                         // ground around each footprint that may hold its shadow
+  double context_m = 1.5;                        // seen ground around that, which the fill continues
   std::optional<Eigen::Vector3d> sun_direction;  // to follow the shadow (world, toward the sun)
   int feather_px = 3;
   int box_pad_px = 4;

@@ -86,6 +86,8 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
   double ours_psnr = 0, base_psnr = 0, ours_ssim = 0, base_ssim = 0, ours_t = 0, base_t = 0, ours_flicker = 0, base_flicker = 0;
   int n_plates = 0, n_images = 0, n_objects = 0;
   for (const auto& id : ids) {
+    if (opt.progress)
+      opt.progress("object " + std::to_string(&id - ids.data() + 1) + "/" + std::to_string(ids.size()) + ": " + id);
     // Every image the object appears in.
     std::vector<DeletionImage> targets;
     std::vector<cv::Mat> masks;

@@ -3,6 +3,7 @@
 // this method and by the cv::inpaint (Telea) baseline on the same masks, and compared with the
 // plates inside the mask (PSNR, SSIM), for temporal flicker (how much the filled ground
 // changes from frame to frame, in 8-bit levels), and for time per image.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct DeletionEvalOptions {
   std::vector<std::string> objects;  // empty: every vehicle with plates
   int max_objects = 0;               // 0: no limit (the largest plates first)
   std::string save_dir;              // before / after / baseline / plate images
+  std::function<void(const std::string&)> progress;  // one line per object, when set
 };
 
 nlohmann::json evaluate_deletion(const scene::Scene& scene, const DeletionEvalOptions& options);

@@ -234,15 +234,46 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
       }
     cv::Mat labels, stats, centroids;
     const int n = cv::connectedComponentsWithStats(clipped, labels, stats, centroids);
+    // The sky's typical brightness in this view: the sun's aureole is far above it.
+    std::vector<float> sky_lum;
+    for (int y = 0; y < mask.rows; y += 2)
+      for (int x = 0; x < mask.cols; x += 2)
+        if (mask.at<uchar>(y, x)) sky_lum.push_back(g.at<float>(y, x));
+    float sky_median = 0;
+    if (!sky_lum.empty()) {
+      std::nth_element(sky_lum.begin(), sky_lum.begin() + long(sky_lum.size() / 2), sky_lum.end());
+      sky_median = sky_lum[sky_lum.size() / 2];
+    }
     for (int k = 1; k < n; ++k) {
       const int area = stats.at<int>(k, cv::CC_STAT_AREA);
       if (area < 4 || size_t(area) > v.rgb.total() / 50) continue;
-      // Round and compact (not a white wall's edge), and brighter in the middle than around.
+      // Round and compact (not a white wall's edge).
       const int bw = stats.at<int>(k, cv::CC_STAT_WIDTH), bh = stats.at<int>(k, cv::CC_STAT_HEIGHT);
       if (double(area) < 0.45 * bw * bh || std::max(bw, bh) > 3 * std::min(bw, bh)) continue;
-      if (area <= sun_visible_area) continue;
-      sun_visible_area = area;
-      sun_visible = pixel_dir(v, centroids.at<double>(k, 0), centroids.at<double>(k, 1)).cast<double>();
+      // Surrounded by sky or glare (a white window or car is surrounded by facade or road), and
+      // that surround much brighter than the sky elsewhere (the aureole).
+      const double cx = centroids.at<double>(k, 0), cy = centroids.at<double>(k, 1);
+      const double r = std::sqrt(area / M_PI);
+      int ring_n = 0, ring_sky = 0;
+      double ring_lum = 0;
+      for (int i = 0; i < 48; ++i) {
+        const double ang = 2 * M_PI * i / 48;
+        for (double rr : {2.0 * r + 2, 3.0 * r + 4}) {
+          const int x = int(std::lround(cx + rr * std::cos(ang))), y = int(std::lround(cy + rr * std::sin(ang)));
+          if (x < 0 || y < 0 || x >= v.rgb.cols || y >= v.rgb.rows) continue;
+          ++ring_n;
+          ring_lum += g.at<float>(y, x);
+          // Sky, or glare too bright for the sky mask to take.
+          if (mask.at<uchar>(y, x) || clipped.at<uchar>(y, x) || g.at<float>(y, x) >= sky_median) ++ring_sky;
+        }
+      }
+      if (ring_n < 16 || ring_sky < 0.6 * ring_n) continue;
+      const double aureole = ring_lum / ring_n / std::max(1e-9f, sky_median);
+      if (sky_median > 0 && aureole < 1.5) continue;
+      const double score = area * aureole;
+      if (score <= sun_visible_area) continue;
+      sun_visible_area = score;
+      sun_visible = pixel_dir(v, cx, cy).cast<double>();
     }
     // Sky samples (a random subset).
     std::vector<cv::Point> sky_px;
@@ -308,7 +339,10 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
     est.sun_cue = best.cue.boxes > 0 && best.cue.score > 0.15 ? "shadows" : "sky_gradient";
   }
   // Sunny or overcast: a blue sky, a visible sun or real shadows say sunny.
-  est.sunny = visible || best.cue.score > 0.25 || (blue_ratio > 1.2 && best.fit.error < overcast.error * 1.5);
+  // A clear sky model that explains the sky clearly better than an overcast one says sunny too
+  // (tinted or hazy skies are not blue, but keep the gradient around the sun).
+  est.sunny = visible || best.cue.score > 0.25 || (blue_ratio > 1.2 && best.fit.error < overcast.error * 1.5) ||
+              best.fit.error < overcast.error * 0.7;
   if (samples.empty() && best.cue.boxes == 0) est.sunny = false;
   est.sky.sun_direction = from_angles(best.az, best.el);
   est.sky.turbidity = float(best.turbidity);
