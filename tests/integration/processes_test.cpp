@@ -83,6 +83,37 @@ TEST(Processes, AgentsAnswerAndStopWithinOneSecond) {
   }
 }
 
+// A request that takes minutes (training a radiance field) does not delay the exit: the agent
+// leaves within a second of SIGTERM, mid-request.
+TEST(Processes, ABusyAgentStillStopsWithinOneSecond) {
+  const auto root = test_support::temp_path("busy-agent");
+  std::filesystem::create_directories(root);
+  ScopedProcess gen(test_support::spawn({bin("chatsim"), "scene", "demo", "--preset", "small", "--no-plates", "--no-views",
+                                         "--out", (root / "scene").string()}, "/dev/null"));
+  const auto made = gen.wait(120s);
+  ASSERT_TRUE(made && WIFEXITED(*made) && WEXITSTATUS(*made) == 0);
+  test_support::InProcessBus b;
+  ScopedProcess proc(test_support::spawn({"/usr/bin/env", "CHATSIM_CACHE=" + (root / "cache").string(),
+                                          "CHATSIM_TRAIN_ITERATIONS=100000", bin("chatsim-background"), "--bus", b.endpoint()},
+                                         "/dev/null"));
+  bus::Node client(b.options("client"), b.context());
+  HeartbeatWatcher watcher(client);
+  client.start();
+  ASSERT_TRUE(watcher.wait_for("background", 5s));
+  flatbuffers::FlatBufferBuilder fbb;
+  const std::string scene = (root / "scene").string();
+  auto req = msgs::CreateAgentRequestDirect(fbb, "background", "ensure_model", scene.c_str(), "{}");
+  const auto r = client.call(bus::topics::agent_request("background"), fbb, msgs::Payload::AgentRequest, req.Union(), 1500ms);
+  EXPECT_FALSE(r.ok());  // still training
+  const double t0 = mono_s();
+  kill(proc.pid, SIGTERM);
+  const auto status = proc.wait(3s);
+  ASSERT_TRUE(status) << "the busy agent did not exit";
+  EXPECT_LT(mono_s() - t0, 1.0);
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0);
+  std::filesystem::remove_all(root);
+}
+
 TEST(Processes, ManagerRefusesAMissingSceneNamingIt) {
   test_support::InProcessBus b;
   ScopedProcess proc(test_support::spawn({bin("chatsim-manager"), "--bus", b.endpoint()}, "/dev/null"));
