@@ -1,5 +1,8 @@
 #include "agents/render/render_agents.hpp"
 
+#include <algorithm>
+#include <cstdlib>
+
 #include "agents/core/agent_registry.hpp"
 #include "agents/decision/decision_agents.hpp"
 #include "agents/render/background_role.hpp"
@@ -71,6 +74,9 @@ std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const
     task.scene_dir = scene;
     task.edit_state = edit;
     task.output_dir = out;
+    // Samples per pixel of the added vehicles: fewer for drafts, more for final renders.
+    if (const char* spp = std::getenv("CHATSIM_FOREGROUND_SPP"); spp != nullptr && std::atoi(spp) > 0)
+      task.foreground_spp = std::min(4096, std::atoi(spp));
     return render_edit(caller, task, progress, fanout);
   };
   return manager::make_manager_agent(std::move(caller), backend, std::move(renderer));

@@ -25,11 +25,13 @@ RenderJob RenderJob::from_json(const json& a) {
     if (a.contains("model")) j.model = a["model"].get<std::string>();
     if (a.contains("removed")) j.removed = a["removed"].get<std::vector<std::string>>();
     if (a.contains("added")) j.added = a["added"];
+    if (a.contains("spp")) j.spp = a["spp"].get<int>();
   } catch (const json::exception& e) {
     bad("(fields)", std::string("wrong type: ") + e.what());
   }
   if (j.out.empty()) bad("out", "missing: the folder this stage writes");
   if (!j.added.is_array()) bad("added", "must be the edit state's list of added vehicles");
+  if (j.spp < 0 || j.spp > 4096) bad("spp", "must be 0 (the default) or 1..4096 samples per pixel");
   return j;
 }
 
@@ -38,6 +40,7 @@ json RenderJob::to_json() const {
          {"removed", removed}, {"added", added}};
   if (!in.empty()) j["in"] = in.string();
   if (!model.empty()) j["model"] = model.string();
+  if (spp > 0) j["spp"] = spp;
   return j;
 }
 

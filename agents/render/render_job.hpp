@@ -28,6 +28,7 @@ struct RenderJob {
   std::filesystem::path model;        // radiance field (may be empty)
   std::vector<std::string> removed;   // deletion
   nlohmann::json added = nlohmann::json::array();  // foreground: the edit state's added vehicles
+  int spp = 0;                        // foreground: path-tracing samples per pixel (0: the agent's default)
 
   // Throws std::invalid_argument naming the field and the fix.
   static RenderJob from_json(const nlohmann::json& args);

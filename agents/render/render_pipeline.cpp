@@ -140,6 +140,7 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
       fj.in = last;
       fj.removed = removed;
       fj.added = added;
+      fj.spp = task.foreground_spp;
       fj.out = stages / ("foreground-" + json_hash(key));
       const StageRun fg = run_stage(call, fanout, "foreground", "render", task.scene_dir, fj, chunks, "foreground", key, progress, 3600);
       timings["foreground"] = fg.seconds, reuse["foreground"] = fg.reused;

@@ -104,7 +104,7 @@ int run_light(const LightArgs& a) {
 }
 
 struct DeletionArgs {
-  std::string scene, out = "bench/results/deletion.json", save;
+  std::string scene, out = "bench/results/deletion.json", save, pair_scene;
   int max_objects = 6;
 };
 
@@ -114,7 +114,15 @@ int run_deletion(const DeletionArgs& a) {
   o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
   o.max_objects = a.max_objects;
   o.save_dir = a.save;
-  const json r = render::inpaint::evaluate_deletion(s, o);
+  json r = render::inpaint::evaluate_deletion(s, o);
+  if (!a.pair_scene.empty()) {
+    // A real capture has no clean plates: a before / after pair beside the report instead.
+    const auto ps = scene::load_scene(a.pair_scene);
+    fs::path prefix(a.out);
+    prefix.replace_extension("");
+    r["before_after"] = render::inpaint::deletion_before_after(ps, prefix.string() + "-" + ps.name + "-");
+    std::printf("before/after pair on %s: %s\n", ps.name.c_str(), r["before_after"]["images"].dump().c_str());
+  }
   write_report(a.out, r);
   fs::path png(a.out);
   png.replace_extension(".png");
@@ -128,17 +136,54 @@ int run_deletion(const DeletionArgs& a) {
   return exit_code::kOk;
 }
 
+// PSNR against training and render time, on the demo's noise-free ground-truth views where the
+// scene has them, else on the held-out images (the title says which).
+void chart_nvs(const json& report, const fs::path& out) {
+  std::vector<bench::ChartPoint> train_pts, render_pts;
+  std::string set = "held_out";
+  for (const auto& run : report["runs"])
+    if (run["sets"].contains("truth_unshifted")) set = "truth_unshifted";
+  for (const auto& run : report["runs"]) {
+    if (!run["sets"].contains(set)) continue;
+    const auto& v = run["sets"][set];
+    train_pts.push_back({run["config"], run["train_seconds"].get<double>() / 60, v["psnr"]});
+    render_pts.push_back({run["config"], v["render_s"], v["psnr"]});
+  }
+  const std::string what = set == "held_out" ? "held-out images" : "ground-truth views";
+  const std::string scene = report["scene"];
+  fs::path png(out);
+  png.replace_extension("");
+  bench::write_scatter_png(png.string() + "-train.png", {"Radiance field on " + scene + ": PSNR on " + what + " against training time",
+                                                         "training [min]", "PSNR [dB]", false}, train_pts);
+  bench::write_scatter_png(png.string() + "-render.png", {"Radiance field on " + scene + ": PSNR on " + what + " against render time",
+                                                          "seconds per image", "PSNR [dB]", false}, render_pts);
+}
+
 struct NvsArgs {
   std::string scene, out;
   std::vector<std::string> configs{"fast-500", "fast-1000", "fast", "fast-no-exposure", "fast-no-pose-refinement"};
   int holdout = 8, max_width = 0;
+  std::string redraw;
 };
 
 int run_nvs(const NvsArgs& a) {
+  if (!a.redraw.empty()) {
+    // Charts again from an earlier report, without training.
+    std::ifstream in(a.redraw);
+    if (!in) {
+      std::cerr << a.redraw << ": cannot read the report\n";
+      return exit_code::kUsage;
+    }
+    chart_nvs(json::parse(in), a.redraw);
+    return exit_code::kOk;
+  }
+  if (a.scene.empty()) {
+    std::cerr << "bench nvs: --scene is required (or --redraw REPORT)\n";
+    return exit_code::kUsage;
+  }
   const auto s = scene::load_scene(a.scene);
   const std::string out = a.out.empty() ? "bench/results/nvs-" + s.name + ".json" : a.out;
   json runs = json::array();
-  std::vector<bench::ChartPoint> train_pts, render_pts;
   for (const auto& name : a.configs) {
     render::gs::TrainOptions o;
     o.holdout = a.holdout;
@@ -164,11 +209,6 @@ int run_nvs(const NvsArgs& a) {
     const json ev = render::gs::evaluate_nvs(model, s, no);
     runs.push_back({{"config", name}, {"train_seconds", tr.seconds}, {"iterations", tr.iterations}, {"converged", tr.converged},
                     {"gaussians", tr.gaussians}, {"train_psnr", tr.train_psnr}, {"sets", ev["sets"]}, {"width", ev["width"]}});
-    const std::string set = ev["sets"].contains("truth_unshifted") ? "truth_unshifted" : "held_out";
-    if (ev["sets"].contains(set)) {
-      train_pts.push_back({name, tr.seconds / 60, ev["sets"][set]["psnr"]});
-      render_pts.push_back({name, ev["sets"][set]["render_s"], ev["sets"][set]["psnr"]});
-    }
     for (const auto& [k, v] : ev["sets"].items())
       std::printf("  %-24s %-26s PSNR %5.2f dB  SSIM %.3f  %.3f s/image\n", name.c_str(), k.c_str(), v["psnr"].get<double>(),
                   v["ssim"].get<double>(), v["render_s"].get<double>());
@@ -178,12 +218,7 @@ int run_nvs(const NvsArgs& a) {
                     {"targets", {{"demo_fast_train_minutes", 10}, {"demo_psnr_db", 30}, {"demo_ssim", 0.9},
                                  {"nuscenes_psnr_db", 24}, {"render_seconds_640x426", 1}}}};
   write_report(out, report);
-  fs::path png(out);
-  png.replace_extension("");
-  bench::write_scatter_png(png.string() + "-train.png", {"Radiance field on " + s.name + ": held-out PSNR against training time",
-                                                         "training [min]", "PSNR [dB]", false}, train_pts);
-  bench::write_scatter_png(png.string() + "-render.png", {"Radiance field on " + s.name + ": held-out PSNR against render time",
-                                                          "seconds per image", "PSNR [dB]", false}, render_pts);
+  chart_nvs(report, out);
   return exit_code::kOk;
 }
 
@@ -194,7 +229,8 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   auto* nvs = bench.add_subcommand("nvs", "Radiance field: train several sizes and the ablations (no exposure, no pose "
                                           "refinement), evaluate each on held-out and ground-truth views; PSNR against "
                                           "training and render time (long: minutes per configuration)");
-  nvs->add_option("--scene", na->scene, "scene directory")->required();
+  nvs->add_option("--scene", na->scene, "scene directory");
+  nvs->add_option("--redraw", na->redraw, "only draw the charts again from this report (no training)")->check(CLI::ExistingFile);
   nvs->add_option("--out", na->out, "JSON report (default bench/results/nvs-<scene>.json; PNG charts beside it)");
   nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement]");
   nvs->add_option("--holdout", na->holdout, "hold out frames with index % N == N/2");
@@ -219,6 +255,10 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   del->add_option("--out", da->out, "JSON report (a PNG chart beside it)");
   del->add_option("--max-objects", da->max_objects, "vehicles to remove (largest plates first)");
   del->add_option("--save", da->save, "before / after / baseline / plate images here");
+  del->add_option("--pair-scene", da->pair_scene,
+                  "also remove a parked vehicle from this scene (e.g. the imported nuScenes scene) and save a "
+                  "before / after / Telea image set beside the report")
+      ->check(CLI::ExistingDirectory);
   del->callback([da, &result] { result = run_deletion(*da); });
 }
 

@@ -97,25 +97,78 @@ struct GroundMap {
   }
 };
 
+// Distance along a ray to where it enters an oriented box (nullopt: it misses).
+std::optional<double> ray_box_entry(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, const scene::TrackPoint& p,
+                                    const Eigen::Vector3d& size) {
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(p.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Vector3d o = R.transpose() * (origin - p.center), d = R.transpose() * dir;
+  double t0 = 0, t1 = 1e30;
+  for (int k = 0; k < 3; ++k) {
+    const double h = size[k] / 2;
+    if (std::abs(d[k]) < 1e-12) {
+      if (std::abs(o[k]) > h) return std::nullopt;
+      continue;
+    }
+    double a = (-h - o[k]) / d[k], b = (h - o[k]) / d[k];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a), t1 = std::min(t1, b);
+    if (t0 > t1) return std::nullopt;
+  }
+  return t0;
+}
+
 // Where labelled objects that are not deleted stand in front of a deleted one: those pixels
 // show the nearer object, which stays (a car hidden behind a truck leaves the truck alone).
+// Per pixel of `region`: the ray's entry into each other box against its entry into the
+// deleted box, or against the ground below it where the ray misses the box (its shadow).
 cv::Mat nearer_objects_mask(const scene::Scene& s, const DeletionImage& im, const scene::ObjectTrack& deleted,
-                            const std::vector<std::string>& ids) {
+                            const std::vector<std::string>& ids, const cv::Mat& region) {
   cv::Mat mask(im.cam.height, im.cam.width, CV_8U, cv::Scalar(0));
   const auto p = at_time(s, deleted, im.time);
   if (!p) return mask;
-  const Eigen::Isometry3d w2c = im.pose.inverse();
-  const double depth = (w2c * p->center).z();
+  const cv::Rect bounds = cv::boundingRect(region);
+  if (bounds.empty()) return mask;
+  // Candidates: other objects whose image footprint meets the region's bounds.
+  std::vector<std::pair<scene::TrackPoint, Eigen::Vector3d>> others;
   for (const auto& other : s.objects) {
     if (std::find(ids.begin(), ids.end(), other.id) != ids.end()) continue;
     const auto q = at_time(s, other, im.time);
     if (!q) continue;
-    const double d = (w2c * q->center).z();
-    if (d <= 0.1 || d >= depth) continue;
-    std::vector<Eigen::Vector3d> pts;
-    for (const auto& c : scene::box_corners(q->center, other.size_lwh, q->yaw)) pts.push_back(c);
-    fill_projected(mask, im, pts, 0);
+    // The image rectangle its corners span (a box reaching behind the camera counts as anywhere).
+    const Eigen::Isometry3d w2c = im.pose.inverse();
+    double u0 = 1e30, v0 = 1e30, u1 = -1e30, v1 = -1e30;
+    bool behind = false, front = false;
+    for (const auto& c : scene::box_corners(q->center, other.size_lwh, q->yaw)) {
+      const Eigen::Vector3d k = w2c * c;
+      if (k.z() < 0.1) {
+        behind = true;
+        continue;
+      }
+      front = true;
+      const double u = im.cam.fx * k.x() / k.z() + im.cam.cx, v = im.cam.fy * k.y() / k.z() + im.cam.cy;
+      u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, v), v1 = std::max(v1, v);
+    }
+    if (!front) continue;
+    if (!behind && (u1 < bounds.x || v1 < bounds.y || u0 > bounds.x + bounds.width || v0 > bounds.y + bounds.height)) continue;
+    others.emplace_back(*q, other.size_lwh);
   }
+  if (others.empty()) return mask;
+  const Eigen::Vector3d C = im.pose.translation();
+  const Eigen::Matrix3d R = im.pose.linear();
+  const double ground = p->center.z() - deleted.size_lwh.z() / 2;
+  for (int y = bounds.y; y < bounds.y + bounds.height; ++y)
+    for (int x = bounds.x; x < bounds.x + bounds.width; ++x) {
+      if (!region.at<uchar>(y, x)) continue;
+      const Eigen::Vector3d d = (R * Eigen::Vector3d((x - im.cam.cx) / im.cam.fx, (y - im.cam.cy) / im.cam.fy, 1)).normalized();
+      double t = 1e30;
+      if (const auto e = ray_box_entry(C, d, *p, deleted.size_lwh)) t = *e;
+      else if (d.z() < -1e-9) t = (ground - C.z()) / d.z();
+      for (const auto& [q, size] : others)
+        if (const auto e = ray_box_entry(C, d, q, size); e && *e < t) {
+          mask.at<uchar>(y, x) = 255;
+          break;
+        }
+    }
   return mask;
 }
 
@@ -234,7 +287,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
       const auto* obj = s.object(ids[k]);
       if (obj == nullptr || obj->track.empty()) continue;
       cv::Mat mk = deletion_mask(s, im, {ids[k]}, o);
-      mk.setTo(0, nearer_objects_mask(s, im, *obj, ids));
+      mk.setTo(0, nearer_objects_mask(s, im, *obj, ids, mk));
       owner.setTo(int(m), mk & (owner < 0));
       mask |= mk;
       ++m;

@@ -156,4 +156,51 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
           {"targets", {{"psnr_gain_db", 3}, {"seconds_per_image", 0.5}}}};
 }
 
+json deletion_before_after(const scene::Scene& s, const std::string& prefix) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<DeletionImage> sources = scene_images(s);
+  DeletionOptions dopt;
+  // The parked vehicle (moves under half a metre) that covers the most of one image, whole and
+  // with nothing in front of it.
+  std::string best_id;
+  size_t best_image = 0;
+  double best_share = 0;
+  for (const auto& obj : s.objects) {
+    if (!obj.has_category_prefix("vehicle") || obj.track.size() < 2) continue;
+    if ((obj.track.front().center - obj.track.back().center).norm() > 0.5) continue;
+    for (size_t i = 0; i < sources.size(); ++i) {
+      const cv::Mat m = deletion_mask(s, sources[i], {obj.id}, dopt);
+      const cv::Rect r = cv::boundingRect(m);
+      if (r.empty() || r.x <= 0 || r.y <= 0 || r.x + r.width >= m.cols || r.y + r.height >= m.rows) continue;  // cut off
+      // In the clear: no nearer labelled object's box over it (those pixels would stay).
+      const Eigen::Isometry3d w2c = sources[i].pose.inverse();
+      const double depth = (w2c * obj.track.front().center).z();
+      bool covered = false;
+      for (const auto& other : s.objects) {
+        if (other.id == obj.id || other.track.empty() || (w2c * other.track.front().center).z() >= depth) continue;
+        if (cv::countNonZero(deletion_mask(s, sources[i], {other.id}, dopt) & m) > 0) covered = true;
+        if (covered) break;
+      }
+      if (covered) continue;
+      const double share = double(cv::countNonZero(m)) / double(m.total());
+      if (share > best_share && share < 0.25) best_share = share, best_id = obj.id, best_image = i;
+    }
+  }
+  if (best_id.empty()) throw std::invalid_argument(s.dir.string() + ": no parked vehicle seen whole in any image");
+  std::vector<DeletionImage> target{sources[best_image]};
+  target[0].radiance = sources[best_image].radiance.clone();
+  const cv::Mat mask = deletion_mask(s, target[0], {best_id}, dopt);
+  const DeletionStats st = delete_objects(s, {best_id}, target, sources, dopt);
+  const cv::Mat before = encode_srgb8(sources[best_image].radiance, float(sources[best_image].exposure));
+  cv::Mat telea;
+  cv::inpaint(before, mask, telea, 5, cv::INPAINT_TELEA);
+  write_rgb8(prefix + "before.png", before);
+  write_rgb8(prefix + "after.png", encode_srgb8(target[0].radiance, float(target[0].exposure)));
+  write_rgb8(prefix + "telea.png", telea);
+  return {{"scene", s.name}, {"object", best_id}, {"camera", target[0].camera}, {"frame", target[0].frame},
+          {"mask_share", best_share}, {"ground_seen", st.ground_seen}, {"seconds", st.seconds},
+          {"total_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()},
+          {"images", {prefix + "before.png", prefix + "after.png", prefix + "telea.png"}}};
+}
+
 }  // namespace chatsim::render::inpaint

@@ -22,4 +22,10 @@ struct DeletionEvalOptions {
 
 nlohmann::json evaluate_deletion(const scene::Scene& scene, const DeletionEvalOptions& options);
 
+// For a scene without clean plates (a real capture): removes one parked vehicle (the one that
+// covers the most of an image while staying whole in it, with no labelled object in front)
+// and writes `<prefix>before.png`, `<prefix>after.png` and `<prefix>telea.png` for a person
+// to look at. Returns what it did.
+nlohmann::json deletion_before_after(const scene::Scene& scene, const std::string& prefix);
+
 }  // namespace chatsim::render::inpaint
