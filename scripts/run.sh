@@ -12,7 +12,8 @@ cd "$(dirname "$0")/.."
 ./scripts/build.sh
 scene=build/demo-scene
 if [ ! -f "$scene/scene.json" ] || grep -q '"layout_only": true' "$scene/scene.json"; then
-  ./build/bin/chatsim scene demo --out "$scene" --seed 1
+  # The images and LiDAR are enough here; benchmarks render their own copy with plates and views.
+  ./build/bin/chatsim scene demo --out "$scene" --seed 1 --no-plates --no-views
 fi
 if [ "$#" -eq 0 ]; then
   set -- "Remove all cars, add a police car chasing a Porsche that drives the wrong way toward me, and move the view 5 m ahead" \

@@ -130,12 +130,12 @@ cv::Mat nearer_objects_mask(const scene::Scene& s, const DeletionImage& im, cons
   if (bounds.empty()) return mask;
   // Candidates: other objects whose image footprint meets the region's bounds.
   std::vector<std::pair<scene::TrackPoint, Eigen::Vector3d>> others;
+  const Eigen::Isometry3d w2c = im.pose.inverse();
   for (const auto& other : s.objects) {
     if (std::find(ids.begin(), ids.end(), other.id) != ids.end()) continue;
     const auto q = at_time(s, other, im.time);
     if (!q) continue;
     // The image rectangle its corners span (a box reaching behind the camera counts as anywhere).
-    const Eigen::Isometry3d w2c = im.pose.inverse();
     double u0 = 1e30, v0 = 1e30, u1 = -1e30, v1 = -1e30;
     bool behind = false, front = false;
     for (const auto& c : scene::box_corners(q->center, other.size_lwh, q->yaw)) {
