@@ -7,6 +7,9 @@
 #include "render/image_io.hpp"
 #include "render/inpaint/deletion.hpp"
 
+#include <map>
+#include <utility>
+
 #include <opencv2/imgproc.hpp>
 
 namespace chatsim::agents::render {
@@ -63,6 +66,7 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       targets.push_back(std::move(d));
     }
     chatsim::render::inpaint::DeletionStats stats;
+    std::map<std::pair<int, std::string>, Behind> rendered;  // the model's view without the removed objects
     if (!job.removed.empty()) {
       const auto sources = chatsim::render::inpaint::scene_images(*s);
       // Follow the deleted objects' shadows with the scene's estimated sun.
@@ -72,9 +76,11 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       chatsim::render::inpaint::BackgroundRenderer behind;
       if (model)
         behind = [&](const DeletionImage& im, const std::vector<std::string>& hidden) {
-          // Only where the deletion needs it (the caller uses the pixels it could not fill).
+          // Only where the deletion needs it (the caller uses the pixels it could not fill);
+          // kept, so the depth below needs no second render.
           const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, hidden, opts);
-          return render_behind(*model, *s, im, hidden, padded_bounds(mask, 2)).radiance;
+          Behind& b = rendered[{im.frame, im.camera}] = render_behind(*model, *s, im, hidden, padded_bounds(mask, 2));
+          return b.radiance;
         };
       stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
     }
@@ -87,8 +93,12 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       cv::Mat depth = chatsim::render::read_float_image(d);
       if (model && !job.removed.empty()) {
         const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, job.removed);
-        if (cv::countNonZero(mask) > 0)
-          render_behind(*model, *s, im, job.removed, padded_bounds(mask, 2)).depth.copyTo(depth, mask);
+        if (cv::countNonZero(mask) > 0) {
+          // The fill's render covers the mask with the shadows (a superset of this one).
+          const auto it = rendered.find({im.frame, im.camera});
+          const Behind b = it != rendered.end() ? it->second : render_behind(*model, *s, im, job.removed, padded_bounds(mask, 2));
+          b.depth.copyTo(depth, mask);
+        }
       }
       chatsim::render::write_exr(depth_file(job.out, im.camera, im.frame), depth);
     }

@@ -42,6 +42,16 @@ StageRun run_stage(const manager::AgentCaller& call, const manager::FanoutCaller
   }
   fs::remove_all(job.out);
   fs::create_directories(job.out);
+  auto take = [&](const AgentOutcome& out) {
+    if (!out.ok) throw std::runtime_error("the " + kind + " agent failed (" + stage + "): " + out.message);
+    run.answers.push_back(out.result);
+  };
+  auto finish = [&] {
+    run.seconds = seconds_since(t0);
+    mark_stage_complete(job.out, {{"key", key}, {"seconds", run.seconds}, {"answers", run.answers}});
+    if (progress) progress(stage, 1.0, stage + ": done in " + std::to_string(int(run.seconds)) + " s");
+    return run;
+  };
   if (fanout && chunks.size() > 1) {
     // Every chunk at once, spread over the workers of this kind.
     std::vector<AgentCall> calls;
@@ -51,26 +61,15 @@ StageRun run_stage(const manager::AgentCaller& call, const manager::FanoutCaller
     }
     if (progress) progress(stage, 0, stage + ": " + std::to_string(chunks.size()) + " chunks over the " + kind + " workers");
     const auto outs = fanout(kind, calls);
-    for (const auto& out : outs) {
-      if (!out.ok) throw std::runtime_error("the " + kind + " agent failed (" + stage + "): " + out.message);
-      run.answers.push_back(out.result);
-    }
-    run.seconds = seconds_since(t0);
-    mark_stage_complete(job.out, {{"key", key}, {"seconds", run.seconds}, {"answers", run.answers}});
-    if (progress) progress(stage, 1.0, stage + ": done in " + std::to_string(int(run.seconds)) + " s");
-    return run;
+    for (const auto& out : outs) take(out);
+    return finish();
   }
   for (size_t k = 0; k < chunks.size(); ++k) {
     job.frames = chunks[k];
     if (progress) progress(stage, double(k) / double(chunks.size()), stage + ": frames " + std::to_string(chunks[k].front()) + "-" + std::to_string(chunks[k].back()));
-    const AgentOutcome out = call(kind, AgentCall{action, scene, job.to_json(), timeout_s});
-    if (!out.ok) throw std::runtime_error("the " + kind + " agent failed (" + stage + "): " + out.message);
-    run.answers.push_back(out.result);
+    take(call(kind, AgentCall{action, scene, job.to_json(), timeout_s}));
   }
-  run.seconds = seconds_since(t0);
-  mark_stage_complete(job.out, {{"key", key}, {"seconds", run.seconds}, {"answers", run.answers}});
-  if (progress) progress(stage, 1.0, stage + ": done in " + std::to_string(int(run.seconds)) + " s");
-  return run;
+  return finish();
 }
 
 }  // namespace

@@ -146,6 +146,16 @@ std::vector<TrainImage> load_images(const scene::Scene& s, const TrainOptions& o
   return out;
 }
 
+// The box of object k at frame f (world to object), or none.
+std::optional<Eigen::Isometry3d> box_inverse(const scene::Scene& s, size_t k, int frame) {
+  const auto p = s.objects[k].at(frame);
+  if (!p) return std::nullopt;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = p->center;
+  T.linear() = Eigen::AngleAxisd(p->yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return T.inverse();
+}
+
 // LiDAR points of each image's frame, placed at the image's time (points on a labelled object
 // move with it), a sample of those in front of the camera: they supervise rendered depth.
 void attach_lidar(const scene::Scene& s, std::vector<TrainImage>& images, uint64_t seed) {
@@ -153,15 +163,14 @@ void attach_lidar(const scene::Scene& s, std::vector<TrainImage>& images, uint64
   std::map<int, std::vector<int>> owner;
   for (const auto& f : s.frames) {
     if (f.lidar.empty()) continue;
+    std::vector<std::optional<Eigen::Isometry3d>> boxes(s.objects.size());
+    for (size_t k = 0; k < s.objects.size(); ++k) boxes[k] = box_inverse(s, k, f.index);
     for (const auto& lp : scene::read_lidar(s.dir / f.lidar)) {
       const Eigen::Vector3d w = f.ego_to_world * lp.xyz.cast<double>();
       int own = -1;
       for (size_t k = 0; k < s.objects.size() && own < 0; ++k)
-        if (const auto p = s.objects[k].at(f.index)) {
-          Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-          T.translation() = p->center;
-          T.linear() = Eigen::AngleAxisd(p->yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-          const Eigen::Vector3d q = T.inverse() * w;
+        if (boxes[k]) {
+          const Eigen::Vector3d q = *boxes[k] * w;
           const Eigen::Vector3d h = s.objects[k].size_lwh / 2;
           if (std::abs(q.x()) < h.x() && std::abs(q.y()) < h.y() && std::abs(q.z()) < h.z()) own = int(k);
         }
@@ -330,15 +339,6 @@ std::vector<Seed> facade_seeds(const scene::Scene& s, const std::vector<TrainIma
   return out;
 }
 
-// The box of object k at frame f (world to object), or none.
-std::optional<Eigen::Isometry3d> box_inverse(const scene::Scene& s, size_t k, int frame) {
-  const auto p = s.objects[k].at(frame);
-  if (!p) return std::nullopt;
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.translation() = p->center;
-  T.linear() = Eigen::AngleAxisd(p->yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  return T.inverse();
-}
 
 bool inside_box(const Eigen::Vector3d& local, const Eigen::Vector3d& size, double margin) {
   const Eigen::Vector3d h = size / 2;
