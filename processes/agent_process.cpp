@@ -1,5 +1,7 @@
 #include "processes/agent_process.hpp"
 
+#include <malloc.h>
+
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -98,7 +100,8 @@ bus::Node::Reply answer_chat_request(agents::Agent& agent, const PathPolicy& pol
                                {{"command", bus::view(req->command())},
                                 {"conversation_id", conversation},
                                 {"render", req->render()},
-                                {"output_dir", bus::view(req->output_dir())}}};
+                                {"output_dir", bus::view(req->output_dir())},
+                                {"preset", bus::view(req->preset())}}};
   const auto refused = refuse_paths(policy, call);
   const auto out = refused ? *refused : agent.handle(call);
   const auto error = error_of(fbb, out, node);
@@ -179,6 +182,19 @@ agents::AgentOutcome outcome_of(const std::string& kind, const bus::CallResult& 
   }
 }
 
+// An agent started along with the manager may not have sent its first heartbeat yet; a request
+// sent before it subscribed would be lost and the caller would wait out the whole deadline.
+constexpr auto kAgentStartGrace = std::chrono::seconds(15);
+
+bool await_agent(bus::Node& node, const AgentLiveness& liveness, const std::string& kind) {
+  return node.wait_until([&] { return !liveness.snapshot(kind, mono_s()).empty(); }, kAgentStartGrace);
+}
+
+std::string no_agent_message(const std::string& kind) {
+  return "no chatsim-" + kind + " process is running on this bus (none sent a heartbeat within " +
+         std::to_string(kAgentStartGrace.count()) + " s); start it or check --bus";
+}
+
 }  // namespace
 
 agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::milliseconds timeout,
@@ -190,6 +206,8 @@ agents::manager::AgentCaller bus_caller(bus::Node& node, std::chrono::millisecon
     std::function<std::optional<std::string>()> give_up;
     std::string topic = bus::topics::agent_request(kind);
     if (liveness != nullptr) {
+      if (!await_agent(node, *liveness, kind))
+        return agents::AgentOutcome::failure(agents::ErrorKind::Unavailable, no_agent_message(kind));
       auto sent_to = liveness->snapshot(kind, mono_s());
       // Several processes of this kind (workers): ask one, not all of them.
       if (sent_to.size() > 1) {
@@ -210,12 +228,11 @@ agents::manager::FanoutCaller bus_fanout_caller(bus::Node& node, std::chrono::mi
     for (size_t i = 0; i < calls.size(); ++i) pending[i] = i;
     std::vector<int> attempts(calls.size(), 0);
     while (!pending.empty()) {
-      const auto workers = liveness.snapshot(kind, mono_s());
-      if (workers.empty()) {
-        for (size_t i : pending)
-          out[i] = agents::AgentOutcome::failure(agents::ErrorKind::Unavailable, "no " + kind + " process is running on this bus");
+      if (!await_agent(node, liveness, kind)) {
+        for (size_t i : pending) out[i] = agents::AgentOutcome::failure(agents::ErrorKind::Unavailable, no_agent_message(kind));
         break;
       }
+      const auto workers = liveness.snapshot(kind, mono_s());
       // One wave: a call per worker.
       const size_t n = std::min(workers.size(), pending.size());
       std::vector<flatbuffers::FlatBufferBuilder> fbbs(n);
@@ -305,7 +322,12 @@ int serve_agent(const AgentProcessOptions& options, const std::string& kind, con
     bus::Node node(no);
     auto agent = make(node);
     const auto answer = [&](const bus::Message& request, flatbuffers::FlatBufferBuilder& fbb) {
-      return answer_agent_request(*agent, policy, no.name, request, fbb);
+      const double t0 = mono_s();
+      auto reply = answer_agent_request(*agent, policy, no.name, request, fbb);
+      // A rendering job frees hundreds of MB of images from many threads' arenas: give it back
+      // to the system, so a long-running agent's size shows what it holds, not its peak.
+      if (mono_s() - t0 > 0.2) malloc_trim(0);
+      return reply;
     };
     node.serve(bus::topics::agent_request(no.kind), answer);
     // Its own topic too, so a manager can spread work over several processes of one kind.

@@ -16,7 +16,7 @@ fs::path partial_name(const fs::path& file) {
   return file.parent_path() / ("." + file.filename().string() + ".part" + std::to_string(getpid()));
 }
 
-void write_exr(const fs::path& file, const cv::Mat& image) {
+void write_exr(const fs::path& file, const cv::Mat& image, ExrCompression compression) {
   if (image.depth() != CV_32F) throw std::invalid_argument("write_exr: " + file.string() + ": not a float image");
   if (!file.parent_path().empty()) fs::create_directories(file.parent_path());
   const cv::Mat img = image.isContinuous() ? image : image.clone();
@@ -25,7 +25,7 @@ void write_exr(const fs::path& file, const cv::Mat& image) {
   auto out = OIIO::ImageOutput::create(tmp.string());
   if (!out) throw std::runtime_error("cannot write " + file.string() + ": " + OIIO::geterror());
   OIIO::ImageSpec spec(img.cols, img.rows, img.channels(), OIIO::TypeDesc::FLOAT);
-  spec.attribute("compression", "zip");
+  spec.attribute("compression", compression == ExrCompression::Zip ? "zip" : "none");
   if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.ptr<float>()) || !out->close())
     throw std::runtime_error("cannot write " + file.string() + ": " + out->geterror());
   fs::rename(tmp, file);

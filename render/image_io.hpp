@@ -10,8 +10,11 @@
 
 namespace chatsim::render {
 
-// A float image of any channel count (CV_32FC1..4) as EXR (zip-compressed, float).
-void write_exr(const std::filesystem::path& file, const cv::Mat& image);
+// A float image of any channel count (CV_32FC1..4) as EXR (float). Zip by default; None for
+// intermediate files read back at once: zip costs about 70 ms per 640x426 RGB image, which
+// over a pipeline's stages is seconds, for a file only 1.3 times smaller.
+enum class ExrCompression { Zip, None };
+void write_exr(const std::filesystem::path& file, const cv::Mat& image, ExrCompression compression = ExrCompression::Zip);
 // Any float image file OpenImageIO reads (EXR, HDR, ...); channels as stored (RGB order).
 cv::Mat read_float_image(const std::filesystem::path& file);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <numeric>
 
 #include "render/denoise.hpp"
 #include "render/parallel.hpp"
@@ -41,6 +42,15 @@ struct SampleResult {
   bool on_catcher = false;
   float catcher_lit = 0, catcher_unoccluded = 0;
 };
+
+// The i-th of n x n strata in an order that spreads consecutive samples over the pixel (a
+// stride near n^2 / golden ratio, coprime with n^2), instead of filling it row by row.
+int stratum(int i, int n) {
+  const int cells = n * n;
+  int stride = std::max(1, int(std::lround(cells * 0.618)));
+  while (std::gcd(stride, cells) != 1) ++stride;
+  return int((long(i) * stride) % cells);
+}
 
 // Moves a ray's origin off the surface along the side it leaves from.
 Eigen::Vector3f offset(const Eigen::Vector3f& p, const Eigen::Vector3f& n_facing) {
@@ -232,6 +242,17 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
   const Tracer tracer(scene, lighting, s);
   const int spp = std::max(1, s.spp);
   const int strata = std::max(1, int(std::floor(std::sqrt(float(spp)))));
+  auto corners_clear = [&](int x, int y) {  // at the shutter's opening and closing (motion blur)
+    for (const float t : {s.shutter_open, s.shutter_close})
+      for (const float dx : {-0.5f, 0.5f})
+        for (const float dy : {-0.5f, 0.5f}) {
+          Ray r = camera_ray(camera, c2w, float(x) + dx, float(y) + dy);
+          r.mask = mask::kAll & ~mask::kCatcher;
+          r.time = t;
+          if (scene.occluded(r)) return false;
+        }
+    return true;
+  };
   std::atomic<int> rows_done{0};
   std::mutex progress_mu;
   parallel_for(region.height, [&](int ry) {
@@ -260,14 +281,19 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
         }
       }
       Rgb sum = Rgb::Zero(), diffuse = Rgb::Zero(), albedo = Rgb::Zero();
-      int covered = 0;
+      int covered = 0, n = 0;
       float lit = 0, unoccluded = 0;
+      // Early stop only where no object reaches into the pixel (its corners see none either)
+      // and every sample so far met the catcher with no shadow ray blocked.
+      bool open_ground = s.catcher_early_stop > 0 && !std::isfinite(depth[rx]) && corners_clear(x, y);
       for (int i = 0; i < spp; ++i) {
+        if (open_ground && i >= s.catcher_early_stop) break;
         // Stratified over a grid for the first strata^2 samples, then random.
         float jx, jy;
         if (i < strata * strata) {
-          jx = (float(i % strata) + rng.uniform()) / float(strata);
-          jy = (float(i / strata) + rng.uniform()) / float(strata);
+          const int cell = stratum(i, strata);  // the first few samples already cover the pixel
+          jx = (float(cell % strata) + rng.uniform()) / float(strata);
+          jy = (float(cell / strata) + rng.uniform()) / float(strata);
         } else {
           jx = rng.uniform();
           jy = rng.uniform();
@@ -275,6 +301,8 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
         Ray ray = camera_ray(camera, c2w, float(x) - 0.5f + jx, float(y) - 0.5f + jy);
         ray.time = s.shutter_open + (s.shutter_close - s.shutter_open) * rng.uniform();
         const SampleResult r = tracer.trace(ray, rng);
+        ++n;
+        open_ground = open_ground && r.on_catcher && r.catcher_lit == r.catcher_unoccluded;
         sum += r.radiance;
         diffuse += r.diffuse;
         albedo += r.albedo;
@@ -288,9 +316,11 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
       } else {
         sum += diffuse;
       }
-      sum /= float(spp);
+      // An early stop leaves nothing to smooth (the catcher has no albedo), so the smoothing
+      // below may divide by spp.
+      sum /= float(n);
       rad[rx] = {sum.x(), sum.y(), sum.z()};
-      alpha[rx] = float(covered) / float(spp);
+      alpha[rx] = float(covered) / float(n);
       shadow[rx] = unoccluded > 0 ? std::clamp(lit / unoccluded, 0.0f, 1.0f) : 1.0f;
     }
     const int done = ++rows_done;

@@ -37,6 +37,8 @@ struct RenderSettings {
   float shutter_close = 0.5f;    // equal values mean no motion blur
   bool include_sky = true;       // primary rays that miss everything see the sky
   int catcher_light_samples = 2; // light samples per pixel sample on the shadow catcher
+  int catcher_early_stop = 0;    // >0: a pixel whose first this-many samples all met the catcher,
+                                 // every shadow ray unblocked, stops there (open ground: lit)
   float clamp_indirect = 0;      // >0: limit on one bounce's contribution (fireflies)
   bool denoise = false;          // smooth the diffuse sky and bounce light (render/denoise.hpp)
   int threads = 0;               // 0: all cores

@@ -445,6 +445,10 @@ class ManagerAgent : public Agent {
       return AgentOutcome::failure(ErrorKind::BadRequest, "manager has no action '" + call.action + "' (actions: chat, reset)");
     if (call.scene.empty())
       return AgentOutcome::failure(ErrorKind::BadRequest, "no scene given: pass the scene directory (--scene DIR)");
+    // Checked before the round changes the conversation, so a typo loses nothing.
+    const std::string preset = call.args.value("preset", std::string());
+    if (!preset.empty() && preset != "draft" && preset != "fast" && preset != "quality")
+      return AgentOutcome::failure(ErrorKind::BadRequest, "unknown rendering preset '" + preset + "' (use draft, fast or quality)");
     try {
       const auto r = manager_.chat(id, call.scene, call.args.value("command", std::string()));
       json result{{"message", r.message}, {"edit_state", r.edit_state}};
@@ -453,7 +457,7 @@ class ManagerAgent : public Agent {
         if (out.empty()) return AgentOutcome::failure(ErrorKind::BadRequest, "rendering needs an output folder (output_dir)");
         if (!renderer_)
           return AgentOutcome::failure(ErrorKind::NotImplemented, "this manager was started without the rendering pipeline");
-        const AgentOutcome rendered = renderer_(call.scene, r.edit_state, out);
+        const AgentOutcome rendered = renderer_(call.scene, r.edit_state, out, preset);
         if (!rendered.ok) {
           AgentOutcome failed = rendered;
           failed.message = "the decisions were made (" + r.message + ") but rendering failed: " + rendered.message;

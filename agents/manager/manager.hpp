@@ -92,12 +92,12 @@ class Manager {
   uint64_t uses_ = 0;
 };
 
-// Renders an edit state into output_dir (the rendering pipeline; see agents/render). Returns the
-// result's summary, or a failure saying why.
+// Renders an edit state into output_dir with a preset (draft, fast or quality; empty: fast) (the
+// rendering pipeline; see agents/render). Returns the result's summary, or a failure saying why.
 using Renderer = std::function<AgentOutcome(const std::string& scene_dir, const nlohmann::json& edit_state,
-                                            const std::string& output_dir)>;
+                                            const std::string& output_dir, const std::string& preset)>;
 
-// The manager as an Agent: action "chat" (args: command, conversation_id, render, output_dir)
+// The manager as an Agent: action "chat" (args: command, conversation_id, render, output_dir, preset)
 // and "reset". With render true, the round's edit state is rendered by `renderer` (none: the
 // manager says it cannot render).
 std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend, Renderer renderer = {});

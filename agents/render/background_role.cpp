@@ -110,7 +110,7 @@ AgentOutcome BackgroundRole::render(const AgentCall& call) {
         ++rendered;
       }
     }
-    chatsim::render::write_exr(radiance_file(job.out, im.camera, im.frame), radiance);
+    chatsim::render::write_exr(radiance_file(job.out, im.camera, im.frame), radiance, chatsim::render::ExrCompression::None);
     if (!depth.empty()) chatsim::render::write_exr(depth_file(job.out, im.camera, im.frame), depth);
     write_exposure(job.out, im.camera, im.frame, exposure);
   }

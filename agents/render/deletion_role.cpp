@@ -85,7 +85,7 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
     }
     for (const auto& im : targets) {
-      chatsim::render::write_exr(radiance_file(job.out, im.camera, im.frame), im.radiance);
+      chatsim::render::write_exr(radiance_file(job.out, im.camera, im.frame), im.radiance, chatsim::render::ExrCompression::None);
       write_exposure(job.out, im.camera, im.frame, im.exposure);
       const fs::path d = depth_file(job.in, im.camera, im.frame);
       if (!fs::exists(d)) continue;

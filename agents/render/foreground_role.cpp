@@ -13,6 +13,7 @@
 #include "agents/core/scene_cache.hpp"
 #include "agents/foreground/asset_bank.hpp"
 #include "agents/render/background_role.hpp"
+#include "agents/render/image_region.hpp"
 #include "agents/render/render_cache.hpp"
 #include "agents/render/render_job.hpp"
 #include "render/equirect.hpp"
@@ -160,6 +161,34 @@ LocalLight local_light(const r::gs::RadianceField* model, const scene::Scene& s,
   return out;
 }
 
+// Composites the vehicles and their shadows over the background, except where the scene is
+// nearer than the vehicle (or than the ground its shadow falls on).
+void composite(const r::RenderedView& fg, const ViewImage& im, double ground_z, const cv::Mat& bg_depth, cv::Mat& out,
+               cv::Mat& out_depth) {
+  const cv::Rect region = fg.region;
+  const Eigen::Matrix3d R = im.pose.linear();
+  const Eigen::Vector3d C = im.pose.translation();
+  for (int y = 0; y < region.height; ++y)
+    for (int x = 0; x < region.width; ++x) {
+      const int px = region.x + x, py = region.y + y;
+      const float a = fg.alpha.at<float>(y, x);
+      const float zf = fg.depth.at<float>(y, x);
+      const float zb = bg_depth.empty() ? std::numeric_limits<float>::infinity() : bg_depth.at<float>(py, px);
+      // Depth of the ground plane at this pixel: where a shadow would fall.
+      const Eigen::Vector3d d = R * Eigen::Vector3d((px - im.cam.cx) / im.cam.fx, (py - im.cam.cy) / im.cam.fy, 1);
+      const double tg = d.z() < -1e-6 ? (ground_z - C.z()) / d.z() : 1e18;
+      const float zg = float(tg);  // z-depth: the ray's camera z is 1 per unit of t here
+      cv::Vec3f& o = out.at<cv::Vec3f>(py, px);
+      const bool scene_in_front_of_vehicle = a > 0 && zb < zf * 0.98f;
+      const bool scene_in_front_of_ground = zb < zg * 0.95f;
+      const float shadow = scene_in_front_of_ground ? 1.0f : fg.shadow.at<float>(y, x);
+      if (scene_in_front_of_vehicle) continue;
+      const cv::Vec3f f = fg.radiance.at<cv::Vec3f>(y, x);
+      o = f + o * ((1 - a) * shadow);
+      if (!out_depth.empty() && a > 0.5f) out_depth.at<float>(py, px) = std::min(zb, zf);
+    }
+}
+
 r::AssetModel vehicle_model(const json& v) {
   static std::mutex mu;
   static std::map<std::string, r::AssetModel> cache;
@@ -204,9 +233,8 @@ AgentOutcome foreground_render(const AgentCall& call) {
       // Vehicles at this time, with the shutter's span for motion blur.
       r::RayScene rs;
       std::vector<Eigen::Vector3d> centres;
-      cv::Rect region;
+      std::vector<cv::Rect> regions;  // one per vehicle with its shadow, overlapping ones merged
       double ground_z = 0;
-      bool any = false;
       for (const auto& v : job.added) {
         const auto p0 = added_vehicle_pose(*s, v, im.time - exposure / 2), p1 = added_vehicle_pose(*s, v, im.time + exposure / 2);
         const auto pc = added_vehicle_pose(*s, v, im.time);
@@ -227,29 +255,14 @@ AgentOutcome foreground_render(const AgentCall& call) {
           const Eigen::Vector3d sd = light.sky.sun_direction.cast<double>().normalized();
           if (light.sunny && sd.z() > 0.05) pts.push_back(q - sd * ((q.z() - ground_z) / sd.z()));
         }
-        double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
-        int behind = 0;
-        for (const auto& w : pts) {
-          const Eigen::Vector3d cc = im.pose.inverse() * w;
-          if (cc.z() < 0.1) {
-            ++behind;
-            continue;
-          }
-          const double u = im.cam.fx * cc.x() / cc.z() + im.cam.cx, vv = im.cam.fy * cc.y() / cc.z() + im.cam.cy;
-          x0 = std::min(x0, u), x1 = std::max(x1, u), y0 = std::min(y0, vv), y1 = std::max(y1, vv);
-        }
-        if (behind == int(pts.size())) continue;
-        const cv::Rect full(0, 0, im.cam.width, im.cam.height);
-        cv::Rect rr = behind > 0 ? full
-                                 : (cv::Rect(int(std::floor(x0)) - 8, int(std::floor(y0)) - 8, int(std::ceil(x1 - x0)) + 16,
-                                             int(std::ceil(y1 - y0)) + 16) & full);
+        const cv::Rect rr = image_region(pts, im.cam, im.pose);
         if (rr.area() == 0) continue;
-        region = region.area() == 0 ? rr : (region | rr);
-        any = true;
+        regions.push_back(rr);
       }
+      regions = merge_overlapping(std::move(regions));
       cv::Mat out = bg.clone();
       cv::Mat out_depth = bg_depth.empty() ? cv::Mat() : bg_depth.clone();
-      if (any) {
+      if (!regions.empty()) {
         ++with_vehicles;
         const uint32_t catcher = rs.add_material(r::Material::shadow_catcher());
         Eigen::Affine3f ground = Eigen::Affine3f::Identity();
@@ -280,33 +293,15 @@ AgentOutcome foreground_render(const AgentCall& call) {
         rset.shutter_open = 0, rset.shutter_close = 1;
         rset.seed = r::hash_seed(uint64_t(im.frame), std::hash<std::string>{}(im.camera));
         rset.clamp_indirect = float(50 * r::luminance(ll.env.irradiance(Eigen::Vector3f::UnitZ())) / M_PI + 1);
-        const auto t0 = std::chrono::steady_clock::now();
-        const auto fg = r::render_view(rs, lighting, im.cam, im.pose, rset, region);
-        render_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        // Composite: the vehicle and its shadow, unless the scene is nearer at that pixel.
-        const Eigen::Matrix3d R = im.pose.linear();
-        const Eigen::Vector3d C = im.pose.translation();
-        for (int y = 0; y < region.height; ++y)
-          for (int x = 0; x < region.width; ++x) {
-            const int px = region.x + x, py = region.y + y;
-            const float a = fg.alpha.at<float>(y, x);
-            const float zf = fg.depth.at<float>(y, x);
-            const float zb = bg_depth.empty() ? std::numeric_limits<float>::infinity() : bg_depth.at<float>(py, px);
-            // Depth of the ground plane at this pixel: where a shadow would fall.
-            const Eigen::Vector3d d = R * Eigen::Vector3d((px - im.cam.cx) / im.cam.fx, (py - im.cam.cy) / im.cam.fy, 1);
-            const double tg = d.z() < -1e-6 ? (ground_z - C.z()) / d.z() : 1e18;
-            const float zg = float(tg);  // z-depth: the ray's camera z is 1 per unit of t here
-            cv::Vec3f& o = out.at<cv::Vec3f>(py, px);
-            const bool scene_in_front_of_vehicle = a > 0 && zb < zf * 0.98f;
-            const bool scene_in_front_of_ground = zb < zg * 0.95f;
-            const float shadow = scene_in_front_of_ground ? 1.0f : fg.shadow.at<float>(y, x);
-            if (scene_in_front_of_vehicle) continue;
-            const cv::Vec3f f = fg.radiance.at<cv::Vec3f>(y, x);
-            o = f + o * ((1 - a) * shadow);
-            if (!out_depth.empty() && a > 0.5f) out_depth.at<float>(py, px) = std::min(zb, zf);
-          }
+        rset.catcher_early_stop = 4;
+        for (const cv::Rect& region : regions) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const auto fg = r::render_view(rs, lighting, im.cam, im.pose, rset, region);
+          render_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          composite(fg, im, ground_z, bg_depth, out, out_depth);
+        }
       }
-      r::write_exr(radiance_file(job.out, im.camera, im.frame), out);
+      r::write_exr(radiance_file(job.out, im.camera, im.frame), out, r::ExrCompression::None);
       if (!out_depth.empty()) r::write_exr(depth_file(job.out, im.camera, im.frame), out_depth);
       write_exposure(job.out, im.camera, im.frame, exposure);
     }

@@ -69,12 +69,15 @@ std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const
                                               manager::FanoutCaller fanout) {
   std::shared_ptr<llm::Backend> backend = llm::make_backend();
   manager::Renderer renderer = [caller, progress, fanout](const std::string& scene, const nlohmann::json& edit,
-                                                          const std::string& out) {
+                                                          const std::string& out, const std::string& preset) {
     RenderTask task;
     task.scene_dir = scene;
     task.edit_state = edit;
     task.output_dir = out;
-    // Samples per pixel of the added vehicles: fewer for drafts, more for final renders.
+    const RenderPreset p = render_preset(preset);  // the manager checked the name
+    task.preset = p.model;
+    task.foreground_spp = p.foreground_spp;
+    // A fixed number of samples per pixel for the added vehicles, whatever the preset.
     if (const char* spp = std::getenv("CHATSIM_FOREGROUND_SPP"); spp != nullptr && std::atoi(spp) > 0)
       task.foreground_spp = std::min(4096, std::atoi(spp));
     return render_edit(caller, task, progress, fanout);

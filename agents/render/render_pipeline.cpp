@@ -74,6 +74,13 @@ StageRun run_stage(const manager::AgentCaller& call, const manager::FanoutCaller
 
 }  // namespace
 
+RenderPreset render_preset(const std::string& name) {
+  if (name == "draft") return {"draft", 8};
+  if (name.empty() || name == "fast") return {"fast", 32};
+  if (name == "quality") return {"quality", 128};
+  throw std::invalid_argument("unknown rendering preset '" + name + "' (use draft, fast or quality)");
+}
+
 AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& task, const PipelineProgress& progress,
                          const manager::FanoutCaller& fanout) {
   const auto t_all = std::chrono::steady_clock::now();

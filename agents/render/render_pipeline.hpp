@@ -24,6 +24,14 @@ struct RenderTask {
   int foreground_spp = 32;
 };
 
+// The rendering presets a user picks (chatsim run --preset): the radiance field's preset and
+// the added vehicles' samples per pixel. Throws std::invalid_argument for an unknown name.
+struct RenderPreset {
+  std::string model;
+  int foreground_spp;
+};
+RenderPreset render_preset(const std::string& name);  // draft, fast (also when empty), quality
+
 // stage (background, deletion, foreground, composition, encoding, training), 0..1, message.
 using PipelineProgress = std::function<void(const std::string&, double, const std::string&)>;
 

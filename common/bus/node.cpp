@@ -355,6 +355,25 @@ std::vector<CallResult> Node::call_many(std::vector<Request>& requests, std::chr
   return results;
 }
 
+bool Node::wait_until(const std::function<bool()>& done, std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!done()) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) return false;
+    auto m = receive(std::min(std::chrono::ceil<std::chrono::milliseconds>(deadline - now), std::chrono::milliseconds(100)));
+    if (!m) continue;
+    if (m->topic() == topics::kHeartbeat ||
+        std::find(call_dispatch_.begin(), call_dispatch_.end(), m->topic()) != call_dispatch_.end()) {
+      dispatch(*m);
+    } else if (m->topic() == reply_topic_) {
+      stats_.late_replies.fetch_add(1, std::memory_order_relaxed);  // no call is open
+    } else {
+      queued_.push_back(std::move(*m));
+    }
+  }
+  return true;
+}
+
 PublishStatus Node::respond(const Message& request, flatbuffers::FlatBufferBuilder& fbb,
                             msgs::Payload type, flatbuffers::Offset<void> payload) {
   const std::string_view reply_to = view(request.header().reply_to());

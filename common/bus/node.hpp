@@ -116,6 +116,10 @@ class Node {
     std::function<std::optional<std::string>()> give_up;
   };
   std::vector<CallResult> call_many(std::vector<Request>& requests, std::chrono::milliseconds timeout);
+  // Waits until done() holds (checked about every 100 ms and after every heartbeat), up to
+  // timeout, handling arriving messages as call() does. Returns done()'s last value. For a
+  // caller that must see a server's first heartbeat before it sends (start-up races).
+  bool wait_until(const std::function<bool()>& done, std::chrono::milliseconds timeout);
   // Serves requests on topic: handler builds the response into fbb and returns its payload.
   // Exceptions become Error responses; requests past their deadline are dropped and counted.
   struct Reply {

@@ -15,6 +15,7 @@
 #include "common/bus/endpoint.hpp"
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
+#include "common/launch/child_registry.hpp"
 #include "common/launch/process_tree.hpp"
 #include "common/util/clock.hpp"
 
@@ -164,6 +165,7 @@ pid_t Launcher::spawn(Child& child) {
     _exit(127);
   }
   setpgid(pid, pid);  // also from the parent, so the group exists before we may signal it
+  child_registry::add(pid);
   child.pid = pid;
   child.started_s = mono_s();
   child.restart_at_s = -1;
@@ -279,14 +281,16 @@ bool Launcher::start_in_order(const std::atomic<bool>& stop) {
 }
 
 void Launcher::reap(bool stopping) {
-  for (;;) {
+  // Adopted orphans (we are a subreaper) are reaped too, now and then: scanning /proc costs.
+  if (mono_s() - orphans_reaped_s_ > 0.5) {
+    orphans_reaped_s_ = mono_s();
+    child_registry::reap_unowned();
+  }
+  for (Child& c : children_) {
+    if (c.pid <= 0) continue;
     int status = 0;
-    const pid_t pid = waitpid(-1, &status, WNOHANG);
-    if (pid <= 0) return;
-    auto it = std::find_if(children_.begin(), children_.end(),
-                           [pid](const Child& c) { return c.pid == pid; });
-    if (it == children_.end()) continue;  // an adopted orphan (we are a subreaper)
-    Child& c = *it;
+    if (waitpid(c.pid, &status, WNOHANG) != c.pid) continue;  // only our own: another launcher may share the process
+    child_registry::remove(c.pid);
     c.pid = -1;
     const double ran = mono_s() - c.started_s;
     const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
@@ -397,12 +401,11 @@ void Launcher::stop_all() {
   // Whatever is left below us (orphans re-parented to this subreaper, or escaped process
   // groups) is ended too.
   for (int round = 0; round < 50; ++round) {
-    const auto rest = descendants_of(getpid());
+    const auto rest = child_registry::unowned_descendants();
     if (rest.empty()) break;
     for (pid_t p : rest) kill(p, round == 0 ? SIGTERM : SIGKILL);
     std::this_thread::sleep_for(std::chrono::milliseconds(round == 0 ? 200 : 20));
-    while (waitpid(-1, nullptr, WNOHANG) > 0) {
-    }
+    child_registry::reap_unowned();
   }
 }
 

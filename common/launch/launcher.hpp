@@ -72,6 +72,7 @@ class Launcher {
     int pid = 0;
   };
   std::map<std::string, Beat> last_beat_;
+  double orphans_reaped_s_ = 0;
 };
 
 }  // namespace chatsim::launch

@@ -60,12 +60,13 @@ void ChatSession::show(const std::string& stage, double fraction, const std::str
   bar_->update(fraction, message);
 }
 
-ChatSession::Outcome ChatSession::round(const std::string& command, const std::string& out, double timeout_s) {
+ChatSession::Outcome ChatSession::round(const std::string& command, const std::string& out, double timeout_s,
+                                        const std::string& preset) {
   Outcome result;
   flatbuffers::FlatBufferBuilder fbb(1024);
   const std::string out_abs = out.empty() ? "" : fs::absolute(out).lexically_normal().string();
   const auto req = msgs::CreateChatRequestDirect(fbb, conversation_.c_str(), scene_.c_str(), command.c_str(), !out.empty(),
-                                                 out_abs.c_str());
+                                                 out_abs.c_str(), preset.c_str());
   const auto sent_to = liveness_.snapshot("manager", mono_s());
   show("decisions", 0, "the agents decide");
   const auto r = node_->call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(),

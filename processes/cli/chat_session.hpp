@@ -35,8 +35,9 @@ class ChatSession {
     nlohmann::json edit_state;
     std::string output_dir;       // empty when not rendered
   };
-  // One round; renders into out when it is not empty.
-  Outcome round(const std::string& command, const std::string& out, double timeout_s);
+  // One round; renders into out when it is not empty, with a rendering preset (draft, fast or
+  // quality; empty: fast).
+  Outcome round(const std::string& command, const std::string& out, double timeout_s, const std::string& preset = "");
   bool lost() const { return lost_; }
   const std::string& conversation() const { return conversation_; }
 

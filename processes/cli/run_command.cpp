@@ -28,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RunArgs {
-  std::string scene, out = "output/run", bus, conversation;
+  std::string scene, out = "output/run", bus, conversation, preset = "fast";
   std::vector<std::string> rounds;
   double timeout_s = 6 * 3600;
 };
@@ -57,7 +57,7 @@ int run_run(const RunArgs& a) {
     // Every round but the last only decides; the last is rendered.
     for (size_t i = 0; i < a.rounds.size(); ++i) {
       const bool last = i + 1 == a.rounds.size();
-      const auto r = session.round(a.rounds[i], last ? a.out : "", a.timeout_s);
+      const auto r = session.round(a.rounds[i], last ? a.out : "", a.timeout_s, a.preset);
       if (!r.ok) {
         spdlog::error("round {}: {}", i + 1, r.message);
         return session.lost() ? exit_code::kBusUnavailable : exit_code::kFailure;
@@ -76,7 +76,7 @@ int run_run(const RunArgs& a) {
 }
 
 struct ChatArgs {
-  std::string scene, out_root = "output/chat", bus;
+  std::string scene, out_root = "output/chat", bus, preset = "fast";
   double timeout_s = 6 * 3600;
   bool no_render = false;
 };
@@ -97,7 +97,7 @@ int run_chat(const ChatArgs& a) {
       if (line.find_first_not_of(" \t") == std::string::npos) continue;
       ++n;
       const std::string out = a.no_render ? "" : (fs::path(a.out_root) / ("round-" + std::to_string(n))).string();
-      const auto r = session.round(line, out, a.timeout_s);
+      const auto r = session.round(line, out, a.timeout_s, a.preset);
       if (!r.ok) {
         spdlog::error("{}", r.message);
         if (session.lost()) return exit_code::kBusUnavailable;
@@ -118,6 +118,10 @@ int run_chat(const ChatArgs& a) {
 
 }  // namespace
 
+const char* const kPresetHelp =
+    "rendering preset: draft (a quick look: small radiance field, 8 samples per pixel), fast (the default: 32) or quality "
+    "(the largest radiance field, trained for long, 128)";
+
 void add_run_commands(CLI::App& app, int& result) {
   auto ra = std::make_shared<RunArgs>();
   auto* run = app.add_subcommand("run", "Edit a scene from commands and render the result: multi-camera video, frames, "
@@ -129,6 +133,7 @@ void add_run_commands(CLI::App& app, int& result) {
   run->add_option("--out", ra->out, "result folder (replaced; written whole or not at all)");
   run->add_option("--bus", ra->bus, "use this running bus instead of starting processes");
   run->add_option("--conversation", ra->conversation, "conversation id (default: a fresh one)");
+  run->add_option("--preset", ra->preset, kPresetHelp)->check(CLI::IsMember({"draft", "fast", "quality"}));
   run->add_option("--timeout-s", ra->timeout_s, "how long to wait for the result (training on first use takes minutes)")
       ->check(CLI::PositiveNumber);
   run->callback([ra, &result] { result = run_run(*ra); });
@@ -138,6 +143,7 @@ void add_run_commands(CLI::App& app, int& result) {
   chat->add_option("--scene", ca->scene, "scene directory (with images)")->required();
   chat->add_option("--out-root", ca->out_root, "folder for the rounds' results");
   chat->add_option("--bus", ca->bus, "use this running bus instead of starting processes");
+  chat->add_option("--preset", ca->preset, kPresetHelp)->check(CLI::IsMember({"draft", "fast", "quality"}));
   chat->add_option("--timeout-s", ca->timeout_s, "how long to wait for each round")->check(CLI::PositiveNumber);
   chat->add_flag("--no-render", ca->no_render, "decide only (print what the agents did)");
   chat->callback([ca, &result] { result = run_chat(*ca); });

@@ -26,8 +26,9 @@ struct Preset {
 };
 Preset preset(const std::string& name) {
   if (name == "quality") return {6000, 960, 1500000};
+  if (name == "draft") return {500, 480, 150000};
   if (name == "fast") return {2000, 640, 600000};
-  throw std::invalid_argument("unknown preset '" + name + "' (use fast or quality)");
+  throw std::invalid_argument("unknown preset '" + name + "' (use draft, fast or quality)");
 }
 
 struct TrainImage {

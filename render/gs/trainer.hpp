@@ -13,7 +13,7 @@
 namespace chatsim::render::gs {
 
 struct TrainOptions {
-  std::string preset = "fast";      // fast | quality
+  std::string preset = "fast";      // draft | fast | quality
   int max_iterations = 0;           // 0: the preset's
   int max_width = 0;                // images wider than this are downscaled (0: the preset's)
   bool exposure = true;             // use exposure_s and learn per-image corrections

@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -35,6 +36,18 @@ std::string run_capture(const std::string& cmd, int* status = nullptr) {
   return out;
 }
 
+// `chatsim plan`'s edit state (its stdout); when there is none, the failure shows what plan said.
+nlohmann::json plan_edit_state(const std::string& plan_command) {
+  const auto log = test_support::temp_path("plan.log");
+  int status = 0;
+  const std::string out = run_capture(plan_command + " 2>" + log.string(), &status);
+  const auto said = test_support::read_file(log);
+  const auto j = nlohmann::json::parse(out, nullptr, false);
+  EXPECT_EQ(status, 0) << said;
+  EXPECT_FALSE(j.is_discarded()) << "plan printed no edit state: " << said;
+  return j;
+}
+
 // The npm reader, installed once into the build tree. Empty when node or npm cannot be had.
 fs::path mcap_js_dir() {
   const fs::path dir = fs::path(CHATSIM_BIN_DIR) / ".." / "mcap-js";
@@ -46,6 +59,16 @@ fs::path mcap_js_dir() {
               "@mcap/nodejs@1.0.2 fzstd@0.1.1 2>&1",
               &status);
   return status == 0 ? dir : fs::path();
+}
+
+// Ends a recording the way a user does (Ctrl-C), once the run it records is over, rather than
+// after a fixed duration that a slow machine can outlast.
+void stop_recording(ScopedProcess& recorder) {
+  std::this_thread::sleep_for(300ms);  // the last answers are still on their way to the recorder
+  kill(recorder.pid, SIGINT);
+  const auto status = recorder.wait(10s);
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 0);
 }
 
 }  // namespace
@@ -138,22 +161,19 @@ TEST(Bag, ReplayingACommandGivesTheSameEditState) {
   std::map<std::string, std::unique_ptr<ScopedProcess>> agents;
   auto start_agent = [&](const std::string& kind) {
     agents[kind] = std::make_unique<ScopedProcess>(test_support::spawn({bin("chatsim-" + kind), "--bus", b.endpoint()}, "/dev/null"));
-    watcher.pids.erase(kind);
-    return watcher.wait_for(kind, 5s);
+    return watcher.wait_for(kind, agents[kind]->pid, 5s);
   };
   for (const std::string kind : {"manager", "view", "deletion", "asset", "motion"}) ASSERT_TRUE(start_agent(kind)) << kind;
 
   const auto file = test_support::temp_path("replay.mcap");
   fs::remove(file);
   ScopedProcess recorder(test_support::spawn(
-      {bin("chatsim"), "bag", "record", "/chat/request", "-o", file.string(), "--duration-s", "6", "--bus", b.endpoint()},
-      "/dev/null"));
+      {bin("chatsim"), "bag", "record", "/chat/request", "-o", file.string(), "--bus", b.endpoint()}, "/dev/null"));
   ASSERT_TRUE(watcher.wait_for("bag-record-" + std::to_string(recorder.pid), 5s));
-  const auto original = run_capture(bin("chatsim") + " plan --bus " + b.endpoint() + " --scene " + scene.string() +
-                                    " 'Remove the red car and add a police car 20 m ahead driving toward me.'"
-                                    " 'Make it turn left.' 2>/dev/null");
-  const auto expected = nlohmann::json::parse(original);
-  ASSERT_TRUE(recorder.wait(15s));
+  const auto expected = plan_edit_state(bin("chatsim") + " plan --bus " + b.endpoint() + " --scene " + scene.string() +
+                                        " 'Remove the red car and add a police car 20 m ahead driving toward me.'"
+                                        " 'Make it turn left.'");
+  stop_recording(recorder);
 
   // A fresh manager: no memory of the conversation.
   agents["manager"].reset();
@@ -194,19 +214,18 @@ TEST(Bag, ARecordedAgentAnswersALaterRun) {
   const auto file = test_support::temp_path("agents.mcap");
   fs::remove(file);
   ScopedProcess recorder(test_support::spawn(
-      {bin("chatsim"), "bag", "record", "--all", "-o", file.string(), "--duration-s", "5", "--bus", b.endpoint()}, "/dev/null"));
+      {bin("chatsim"), "bag", "record", "--all", "-o", file.string(), "--bus", b.endpoint()}, "/dev/null"));
   ASSERT_TRUE(watcher.wait_for("bag-record-" + std::to_string(recorder.pid), 5s));
   const std::string plan = bin("chatsim") + " plan --bus " + b.endpoint() + " --scene " + scene.string() +
-                           " 'Add a white SUV in the right front that turns right at the intersection.' 2>/dev/null";
-  const auto expected = nlohmann::json::parse(run_capture(plan));
-  ASSERT_TRUE(recorder.wait(15s));
+                           " 'Add a white SUV in the right front that turns right at the intersection.'";
+  const auto expected = plan_edit_state(plan);
+  stop_recording(recorder);
 
   agents["motion"].reset();  // gone: only the recording can answer for it now
   ScopedProcess mock(test_support::spawn(
       {bin("chatsim-mock"), "--agent", "motion", "--bag", file.string(), "--bus", b.endpoint()}, "/dev/null"));
-  watcher.pids.erase("motion");
-  ASSERT_TRUE(watcher.wait_for("motion", 5s));
-  const auto replayed = nlohmann::json::parse(run_capture(plan));
+  ASSERT_TRUE(watcher.wait_for("motion", mock.pid, 5s));
+  const auto replayed = plan_edit_state(plan);
   auto strip_rounds = [](nlohmann::json j) {
     j.erase("rounds");  // the same, but in a new conversation
     return j;

@@ -82,8 +82,7 @@ TEST(Faults, AnAgentKilledMidRequestIsReportedWithinFiveSeconds) {
     // The agent comes back (as the launcher would respawn it): the next request succeeds.
     slow.reset();
     ScopedProcess back(test_support::spawn({bin("chatsim-" + victim), "--bus", b.endpoint()}, "/dev/null"));
-    watcher.pids.erase(victim);
-    ASSERT_TRUE(watcher.wait_for(victim, 5s));
+    ASSERT_TRUE(watcher.wait_for(victim, back.pid, 5s));
     const auto again = chat(client, scene, command);
     ASSERT_TRUE(again.ok()) << again.error_message;
     EXPECT_TRUE(again.response->payload<msgs::ChatResponse>()->ok());

@@ -2,14 +2,17 @@
 // that leaves no process behind.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
+#include "common/launch/launcher.hpp"
 #include "common/launch/process_tree.hpp"
 #include "tests/support/heartbeat_watcher.hpp"
 #include "tests/support/subprocess.hpp"
@@ -124,6 +127,39 @@ TEST(Launch, GrandchildrenThatLeftTheProcessGroupAreStoppedToo) {
   for (pid_t p : tree) EXPECT_FALSE(launch::process_alive(p)) << "pid " << p << " left running";
 }
 
+// Two launchers in one process (two chat sessions, each with its own agents): stopping one
+// neither takes the other's exit statuses (it would wait for them forever) nor ends its processes.
+TEST(Launch, TwoLaunchersInOneProcessEachStopOnlyTheirOwn) {
+  const std::string yaml = "processes:\n  - {name: sleeper, executable: /bin/sleep, args: ['300'], bus_args: false, ready: none}\n";
+  launch::Launcher outer(launch::parse_launch_file(yaml, "outer.yaml"), {});
+  launch::Launcher inner(launch::parse_launch_file(yaml, "inner.yaml"), {});
+  std::atomic<bool> stop_outer{false}, stop_inner{false};
+  std::atomic<bool> inner_done{false};
+  std::thread outer_thread([&] { outer.run(stop_outer); });
+  std::thread inner_thread([&] {
+    inner.run(stop_inner);
+    inner_done = true;
+  });
+  std::vector<pid_t> sleepers;
+  for (int i = 0; i < 250 && sleepers.size() < 2; ++i) {
+    std::this_thread::sleep_for(20ms);
+    sleepers = launch::children_of(getpid());
+  }
+  ASSERT_EQ(sleepers.size(), 2u);
+  const auto before = std::set<pid_t>(sleepers.begin(), sleepers.end());
+  stop_inner = true;
+  for (int i = 0; i < 250 && !inner_done; ++i) std::this_thread::sleep_for(20ms);
+  EXPECT_TRUE(inner_done) << "the inner launcher did not finish stopping";
+  std::vector<pid_t> left;
+  for (pid_t p : before)
+    if (launch::process_alive(p)) left.push_back(p);
+  EXPECT_EQ(left.size(), 1u) << "the outer launcher's process must survive the inner one's stop";
+  stop_outer = true;
+  outer_thread.join();
+  inner_thread.join();
+  for (pid_t p : before) EXPECT_FALSE(launch::process_alive(p)) << "pid " << p << " left running";
+}
+
 TEST(Launch, ChildrenEndWhenTheLauncherIsKilled) {
   const auto file = temp_path("orphans.yaml");
   std::ofstream(file) << "bus: tcp://127.0.0.1:0\n"
@@ -215,10 +251,16 @@ TEST(Launch, AProxyRestartNeedsNoAgentRestart) {
                                10s))
       << read_file(g.log);
   EXPECT_EQ(g.watcher->pids["view"], view_pid);
-  // ... and answers requests.
-  flatbuffers::FlatBufferBuilder fbb;
-  const auto req = msgs::CreateAgentRequestDirect(fbb, "view", "adjust", "", R"({"instruction": "move 5 m ahead"})");
-  const auto r = g.node->call(bus::topics::agent_request("view"), fbb, msgs::Payload::AgentRequest, req.Union(), 5s);
+  // ... and answers requests, once its subscriptions have reached the new proxy: each socket
+  // reconnects on its own timer, so a beat proves the view's publisher is back, not its
+  // subscriber. A user's retry is what this models; it must succeed within seconds.
+  bus::CallResult r;
+  for (const auto end = std::chrono::steady_clock::now() + 10s; std::chrono::steady_clock::now() < end;) {
+    flatbuffers::FlatBufferBuilder fbb;
+    const auto req = msgs::CreateAgentRequestDirect(fbb, "view", "adjust", "", R"({"instruction": "move 5 m ahead"})");
+    r = g.node->call(bus::topics::agent_request("view"), fbb, msgs::Payload::AgentRequest, req.Union(), 1s);
+    if (r.ok()) break;
+  }
   ASSERT_TRUE(r.ok()) << r.error_message;
   const auto* resp = r.response->payload<msgs::AgentResponse>();
   ASSERT_NE(resp, nullptr);

@@ -24,6 +24,18 @@ const std::vector<std::string> kProcesses = {"chatsim-manager", "chatsim-view", 
                                              "chatsim-deletion", "chatsim-asset", "chatsim-motion",
                                              "chatsim-foreground", "chatsim-bus", "chatsim-mock", "chatsim"};
 
+// The call was answered with a refusal (BadRequest) whose message says why.
+template <class Response>
+void expect_refused(const bus::CallResult& r, const std::string& why) {
+  ASSERT_TRUE(r.ok()) << r.error_message;
+  const auto* resp = r.response->template payload<Response>();
+  ASSERT_NE(resp, nullptr);
+  EXPECT_FALSE(resp->ok());
+  ASSERT_NE(resp->error(), nullptr);
+  EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest);
+  EXPECT_NE(bus::view(resp->error()->message()).find(why), std::string_view::npos) << bus::view(resp->error()->message());
+}
+
 }  // namespace
 
 TEST(Processes, EveryProcessHasHelp) {
@@ -114,7 +126,8 @@ TEST(Processes, ABusyAgentStillStopsWithinOneSecond) {
   std::filesystem::remove_all(root);
 }
 
-TEST(Processes, ManagerRefusesAMissingSceneNamingIt) {
+// A missing scene or an unknown rendering preset is refused by name before the round is decided.
+TEST(Processes, ManagerRefusesAMissingSceneOrUnknownPresetNamingIt) {
   test_support::InProcessBus b;
   ScopedProcess proc(test_support::spawn({bin("chatsim-manager"), "--bus", b.endpoint()}, "/dev/null"));
   bus::Node client(b.options("client"), b.context());
@@ -123,14 +136,18 @@ TEST(Processes, ManagerRefusesAMissingSceneNamingIt) {
   ASSERT_TRUE(watcher.wait_for("manager", 5s));
   flatbuffers::FlatBufferBuilder fbb;
   auto req = msgs::CreateChatRequestDirect(fbb, "c1", "scene", "remove all cars");
-  auto r = client.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(), 5s);
-  ASSERT_TRUE(r.ok()) << r.error_message;
-  const auto* resp = r.response->payload<msgs::ChatResponse>();
-  ASSERT_NE(resp, nullptr);
-  EXPECT_FALSE(resp->ok());
-  EXPECT_EQ(bus::view(resp->conversation_id()), "c1");
-  EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest);
-  EXPECT_NE(bus::view(resp->error()->message()).find("scene"), std::string_view::npos);
+  const auto r = client.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(), 5s);
+  expect_refused<msgs::ChatResponse>(r, "scene");
+  if (const auto* resp = r.ok() ? r.response->payload<msgs::ChatResponse>() : nullptr) {
+    EXPECT_EQ(bus::view(resp->conversation_id()), "c1");
+  }
+
+  const std::string out = test_support::temp_path("preset-out").string();
+  flatbuffers::FlatBufferBuilder fbb2;
+  auto bad_preset = msgs::CreateChatRequestDirect(fbb2, "c2", "/tmp", "remove all cars", true, out.c_str(), "ultra");
+  expect_refused<msgs::ChatResponse>(client.call(bus::topics::kChatRequest, fbb2, msgs::Payload::ChatRequest, bad_preset.Union(), 5s),
+                                     "unknown rendering preset 'ultra'");
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 TEST(Processes, MockAnswersFromItsScript) {
@@ -201,14 +218,8 @@ TEST(Processes, PathsOutsideTheAllowedRootsAreRefused) {
   for (const std::string& scene : {std::string("/etc"), (root / ".." / "elsewhere").string()}) {
     flatbuffers::FlatBufferBuilder fbb;
     auto req = msgs::CreateChatRequestDirect(fbb, "c1", scene.c_str(), "remove all cars");
-    auto r = client.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(), 5s);
-    ASSERT_TRUE(r.ok()) << r.error_message;
-    const auto* resp = r.response->payload<msgs::ChatResponse>();
-    ASSERT_NE(resp, nullptr);
-    EXPECT_FALSE(resp->ok());
-    EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest);
-    EXPECT_NE(bus::view(resp->error()->message()).find("outside the allowed folders"), std::string_view::npos)
-        << bus::view(resp->error()->message());
+    expect_refused<msgs::ChatResponse>(
+        client.call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(), 5s), "outside the allowed folders");
   }
 }
 
@@ -228,14 +239,8 @@ TEST(Processes, RenderingStagePathsOutsideTheAllowedRootsAreRefused) {
   for (const std::string& args : {std::string(R"({"out": "/tmp/../etc/chatsim-stage"})"), R"({"out": ")" + scene + R"(", "model": "/etc/passwd"})"}) {
     flatbuffers::FlatBufferBuilder fbb;
     auto req = msgs::CreateAgentRequestDirect(fbb, "background", "render", scene.c_str(), args.c_str());
-    auto r = client.call(bus::topics::agent_request("background"), fbb, msgs::Payload::AgentRequest, req.Union(), 5s);
-    ASSERT_TRUE(r.ok()) << r.error_message;
-    const auto* resp = r.response->payload<msgs::AgentResponse>();
-    ASSERT_NE(resp, nullptr);
-    EXPECT_FALSE(resp->ok());
-    ASSERT_NE(resp->error(), nullptr);
-    EXPECT_EQ(resp->error()->code(), msgs::ErrorCode::BadRequest);
-    EXPECT_NE(bus::view(resp->error()->message()).find("outside the allowed folders"), std::string_view::npos)
-        << bus::view(resp->error()->message());
+    expect_refused<msgs::AgentResponse>(
+        client.call(bus::topics::agent_request("background"), fbb, msgs::Payload::AgentRequest, req.Union(), 5s),
+        "outside the allowed folders");
   }
 }

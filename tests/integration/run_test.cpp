@@ -3,15 +3,25 @@
 // run reuses the cached radiance field and background stage. No process is left behind.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
+#include "common/bus/topics.hpp"
+#include "common/util/clock.hpp"
+#include "tests/support/bus_fixture.hpp"
+#include "tests/support/heartbeat_watcher.hpp"
 #include "tests/support/subprocess.hpp"
 
 using namespace chatsim;
 using namespace std::chrono_literals;
 using test_support::bin;
+using test_support::HeartbeatWatcher;
 using test_support::ScopedProcess;
 namespace fs = std::filesystem;
 
@@ -84,6 +94,95 @@ TEST_F(Run, RemovesAddsAndWritesEveryOutputThenReusesStages) {
   EXPECT_FALSE(second["reused"]["foreground"].get<bool>());  // the car changed colour
   for (const char* name : {"chatsim-manager", "chatsim-foregro", "chatsim-bus"})  // comm is cut at 15 characters
     EXPECT_EQ(test_support::count_with_env(name, (*root_ / "cache").string()), 0) << name;
+}
+
+// Each rendering agent killed with -9 while it works on a rendered round: chatsim run says
+// which agent failed within 5 s and leaves no result folder, not even a half-written one; with
+// the agent back, the same round succeeds.
+TEST_F(Run, ARenderingAgentKilledMidRenderIsReportedAndLeavesNoOutput) {
+  setenv("CHATSIM_TRAIN_ITERATIONS", "60", 1);
+  setenv("CHATSIM_FOREGROUND_SPP", "4", 1);
+  for (const std::string victim : {"background", "deletion", "foreground"}) {
+    SCOPED_TRACE(victim);
+    // A cache of its own: stages an earlier victim's run rendered would be reused, not asked for.
+    setenv("CHATSIM_CACHE", (*root_ / ("cache-" + victim)).c_str(), 1);
+    test_support::InProcessBus b;
+    bus::Node client(b.options("client"), b.context());
+    HeartbeatWatcher watcher(client);
+    double asked_at = 0;
+    client.subscribe(bus::topics::agent_request(victim), [&](const bus::Message&) {
+      if (asked_at == 0) asked_at = mono_s();
+    });
+    client.start();
+    std::vector<std::unique_ptr<ScopedProcess>> agents;
+    for (const std::string kind : {"manager", "view", "background", "deletion", "asset", "motion", "foreground"}) {
+      if (kind == victim) continue;
+      agents.push_back(std::make_unique<ScopedProcess>(test_support::spawn({bin("chatsim-" + kind), "--bus", b.endpoint()}, "/dev/null")));
+      ASSERT_TRUE(watcher.wait_for(kind, 10s)) << kind;
+    }
+    const fs::path script = *root_ / ("slow-" + victim + ".yaml");
+    std::ofstream(script) << "agent: " << victim << "\nresponses:\n  - delay_ms: 30000\n    result: {}\n";
+    auto slow = std::make_unique<ScopedProcess>(
+        test_support::spawn({bin("chatsim-mock"), "--script", script.string(), "--bus", b.endpoint()}, "/dev/null"));
+    ASSERT_TRUE(watcher.wait_for(victim, slow->pid, 5s));
+
+    const fs::path out = *root_ / ("killed-" + victim);
+    const fs::path log = *root_ / ("killed-" + victim + ".log");
+    const std::vector<std::string> run = {bin("chatsim"), "run", "--bus", b.endpoint(), "--scene", (*root_ / "scene").string(),
+                                          "--out", out.string(), "Remove the nearest car and add a red car 15 m ahead"};
+    ScopedProcess round(test_support::spawn(run, log.string()));
+    // Killed once the request has reached it (earlier stages take seconds: training, renders).
+    const double until = mono_s() + 120;
+    while (asked_at == 0 && mono_s() < until) client.spin_once(20ms);
+    ASSERT_GT(asked_at, 0) << "the " << victim << " agent was never asked: " << test_support::read_file(log);
+    std::this_thread::sleep_for(300ms);
+    const double killed_at = mono_s();
+    kill(slow->pid, SIGKILL);
+    const auto status = round.wait(20s);
+    ASSERT_TRUE(status) << "chatsim run did not notice";
+    EXPECT_LT(mono_s() - killed_at, 5.0);
+    EXPECT_NE(WEXITSTATUS(*status), 0);
+    EXPECT_NE(test_support::read_file(log).find("the " + victim + " agent failed"), std::string::npos) << test_support::read_file(log);
+    EXPECT_FALSE(fs::exists(out));
+    for (const auto& e : fs::directory_iterator(*root_))
+      EXPECT_EQ(e.path().filename().string().find("killed-" + victim + ".part"), std::string::npos) << e.path();
+
+    // Back (as the launcher respawns it): the same round succeeds.
+    slow.reset();
+    agents.push_back(std::make_unique<ScopedProcess>(test_support::spawn({bin("chatsim-" + victim), "--bus", b.endpoint()}, "/dev/null")));
+    ASSERT_TRUE(watcher.wait_for(victim, agents.back()->pid, 10s));
+    ScopedProcess again(test_support::spawn(run, log.string()));
+    const auto ok = again.wait(240s);
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(WEXITSTATUS(*ok), 0) << test_support::read_file(log);
+    EXPECT_TRUE(fs::exists(out / "video.mp4"));
+  }
+  unsetenv("CHATSIM_CACHE");
+  unsetenv("CHATSIM_TRAIN_ITERATIONS");
+  unsetenv("CHATSIM_FOREGROUND_SPP");
+}
+
+// A scene whose image is corrupt (it exists, so the scene loads) fails the round with a message
+// naming the file, and leaves no result folder.
+TEST_F(Run, ACorruptImageFailsTheRoundNamingItAndLeavesNoOutput) {
+  const fs::path scene = *root_ / "corrupt-scene";
+  fs::copy(*root_ / "scene", scene, fs::copy_options::recursive);
+  std::vector<fs::path> images;
+  for (const auto& e : fs::recursive_directory_iterator(scene / "images"))
+    if (e.is_regular_file()) images.push_back(e.path());
+  ASSERT_FALSE(images.empty());
+  std::sort(images.begin(), images.end());
+  std::ofstream(images.front(), std::ios::trunc) << "not an image";
+  const fs::path out = *root_ / "corrupt-out", log = *root_ / "corrupt.log";
+  const int code = run_shell("CHATSIM_CACHE=" + (*root_ / "cache-corrupt").string() + " CHATSIM_TRAIN_ITERATIONS=60 " +
+                                 bin("chatsim") + " run --scene " + scene.string() + " --out " + out.string() +
+                                 " 'Remove the nearest car' > " + log.string() + " 2>&1",
+                             120s);
+  const std::string said = test_support::read_file(log);
+  EXPECT_GT(code, 0) << said;
+  EXPECT_NE(said.find(images.front().filename().string()), std::string::npos) << said;
+  EXPECT_NE(said.find("corrupt"), std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(Run, LayoutOnlySceneIsRefusedBeforeAnyProcessStarts) {

@@ -30,6 +30,12 @@ class HeartbeatWatcher {
     return until([&] { return pids.count(name) != 0; }, timeout);
   }
 
+  // For a process that replaces another of the same name: beats of the one it replaced may
+  // still be queued here, so only a beat from this pid counts.
+  bool wait_for(const std::string& name, int pid, std::chrono::milliseconds timeout) {
+    return until([&] { return pids.count(name) != 0 && pids[name] == pid; }, timeout);
+  }
+
   std::map<std::string, int> pids;
 
  private:

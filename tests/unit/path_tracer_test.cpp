@@ -140,28 +140,35 @@ TEST(PathTracer, MetalFurnaceLosesLittleEnergy) {
   EXPECT_LT(v, 1.01);
 }
 
-TEST(PathTracer, ShadowCatcherRecordsTheShadowOfABoxAndNothingElse) {
+// A box standing on a shadow-catcher ground, under a uniform sky of 100 and a bright sun.
+struct BoxOnCatcher {
   RayScene rs;
-  const uint32_t ground = rs.add_material(Material::shadow_catcher());
-  const uint32_t box = rs.add_material(Material::diffuse("box", Rgb::Constant(0.5f)));
-  rs.add_instance(rs.add_prototype(make_quad(-50, -50, 50, 50), {ground}), Eigen::Affine3f::Identity(), std::nullopt,
-                  {}, mask::kCatcher);
-  Eigen::Affine3f at = Eigen::Affine3f::Identity();
-  at.translate(Eigen::Vector3f(0, 0, 1));
-  rs.add_instance(rs.add_prototype(make_box({2, 2, 2}), {box}), at, std::nullopt, {}, mask::kForeground);
-  rs.commit();
-  const EnvMap sky = EnvMap::uniform(Rgb::Constant(100.0f));
+  EnvMap sky = EnvMap::uniform(Rgb::Constant(100.0f));
   Lighting light;
-  light.sky = &sky;
-  light.sun_direction = Eigen::Vector3f(0, 0, 1);  // straight overhead: shadow under the box
-  light.sun_radiance = Rgb::Constant(3e7f);
-  light.sun_cos_max = sun_cos_half_angle();
+  BoxOnCatcher(const Eigen::Vector3f& size, float centre_height, const Eigen::Vector3f& sun_direction) {
+    const uint32_t ground = rs.add_material(Material::shadow_catcher());
+    const uint32_t box = rs.add_material(Material::diffuse("box", Rgb::Constant(0.5f)));
+    rs.add_instance(rs.add_prototype(make_quad(-50, -50, 50, 50), {ground}), Eigen::Affine3f::Identity(), std::nullopt,
+                    {}, mask::kCatcher);
+    Eigen::Affine3f at = Eigen::Affine3f::Identity();
+    at.translate(Eigen::Vector3f(0, 0, centre_height));
+    rs.add_instance(rs.add_prototype(make_box(size), {box}), at, std::nullopt, {}, mask::kForeground);
+    rs.commit();
+    light.sky = &sky;
+    light.sun_direction = sun_direction;
+    light.sun_radiance = Rgb::Constant(3e7f);
+    light.sun_cos_max = sun_cos_half_angle();
+  }
+};
+
+TEST(PathTracer, ShadowCatcherRecordsTheShadowOfABoxAndNothingElse) {
+  BoxOnCatcher b({2, 2, 2}, 1, Eigen::Vector3f(0, 0, 1));  // sun straight overhead: shadow under the box
   RenderSettings s;
   s.spp = 16;
   s.include_sky = false;
   const scene::Camera cam = test_camera(64, 64, 90);
   const auto c2w = look({0, -6, 8}, {0, 0.6, -1}, {0, 1, 0});
-  const auto view = render_view(rs, light, cam, c2w, s);
+  const auto view = render_view(b.rs, b.light, cam, c2w, s);
   // The ground right beside the box (x = 1.5, in its sun shadow? no: sun overhead) is lit by
   // the sun; a point far away is fully lit; the box itself is covered (alpha 1).
   auto pixel_of = [&](const Eigen::Vector3d& w) {
@@ -179,29 +186,37 @@ TEST(PathTracer, ShadowCatcherRecordsTheShadowOfABoxAndNothingElse) {
   EXPECT_EQ(view.radiance.at<cv::Vec3f>(far)[0], 0.0f); // the catcher itself is not drawn
 }
 
+// Open ground stops sampling early; everything else is sampled as before, so the image barely
+// changes: covered pixels are identical, the shadow differs only where it was nearly 1.
+TEST(PathTracer, EarlyStopOnOpenGroundChangesAlmostNothing) {
+  BoxOnCatcher b({2, 2, 2}, 1, Eigen::Vector3f(0.5f, 0.3f, 0.8f).normalized());
+  RenderSettings s;
+  s.spp = 16;
+  s.include_sky = false;
+  const scene::Camera cam = test_camera(64, 64, 90);
+  const auto c2w = look({0, -6, 8}, {0, 0.6, -1}, {0, 1, 0});
+  const auto full = render_view(b.rs, b.light, cam, c2w, s);
+  s.catcher_early_stop = 4;
+  const auto early = render_view(b.rs, b.light, cam, c2w, s);
+  cv::Mat covered = full.alpha > 0;
+  ASSERT_GT(cv::countNonZero(covered), 50);
+  EXPECT_EQ(cv::norm(full.radiance, early.radiance, cv::NORM_INF, covered), 0.0);
+  EXPECT_EQ(cv::norm(full.alpha, early.alpha, cv::NORM_INF), 0.0);
+  EXPECT_LT(cv::norm(full.shadow, early.shadow, cv::NORM_INF), 0.1);
+  EXPECT_LT(cv::norm(full.shadow, early.shadow, cv::NORM_L1) / (64 * 64), 0.003);
+  EXPECT_LT(cv::countNonZero(early.shadow < 0.9f), cv::countNonZero(full.shadow < 0.9f) + 3);  // the shadow is kept
+  EXPECT_GT(cv::countNonZero(full.shadow < 0.9f), 20);
+}
+
 TEST(PathTracer, ShadowCatcherUnderAnOverheadSunIsDarkBelowTheBox) {
-  RayScene rs;
-  const uint32_t ground = rs.add_material(Material::shadow_catcher());
-  const uint32_t box = rs.add_material(Material::diffuse("box", Rgb::Constant(0.5f)));
-  rs.add_instance(rs.add_prototype(make_quad(-50, -50, 50, 50), {ground}), Eigen::Affine3f::Identity(), std::nullopt,
-                  {}, mask::kCatcher);
-  Eigen::Affine3f at = Eigen::Affine3f::Identity();
-  at.translate(Eigen::Vector3f(0, 0, 2));
-  rs.add_instance(rs.add_prototype(make_box({2, 2, 0.5f}), {box}), at, std::nullopt, {}, mask::kForeground);
-  rs.commit();
-  const EnvMap sky = EnvMap::uniform(Rgb::Constant(100.0f));
-  Lighting light;
-  light.sky = &sky;
-  light.sun_direction = Eigen::Vector3f(0, 0, 1);
-  light.sun_radiance = Rgb::Constant(3e7f);
-  light.sun_cos_max = sun_cos_half_angle();
+  BoxOnCatcher b({2, 2, 0.5f}, 2, Eigen::Vector3f(0, 0, 1));
   RenderSettings s;
   s.spp = 16;
   // Looking up from below the box's edge is awkward; look straight down at the shadow beside
   // a slab raised 2 m: its shadow is a 2 x 2 m square on the ground, seen past the slab.
   const scene::Camera cam = test_camera(64, 64, 60);
   const auto c2w = look({4, 0, 1}, {-1, 0, -0.35}, {0, 0, 1});
-  const auto view = render_view(rs, light, cam, c2w, s);
+  const auto view = render_view(b.rs, b.light, cam, c2w, s);
   const Eigen::Vector3d c = c2w.inverse() * Eigen::Vector3d(0.5, 0, 0);
   const cv::Point under(int(std::lround(cam.fx * c.x() / c.z() + cam.cx)), int(std::lround(cam.fy * c.y() / c.z() + cam.cy)));
   // Sun blocked: what is left is the sky not hidden by the slab, a small share of the light.
