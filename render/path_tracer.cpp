@@ -316,8 +316,9 @@ RenderedView render_view(const RayScene& scene, const Lighting& lighting, const 
       } else {
         sum += diffuse;
       }
-      // An early stop leaves nothing to smooth (the catcher has no albedo), so the smoothing
-      // below may divide by spp.
+      // Averages over the n samples taken (fewer than spp after an early stop). The denoised
+      // sums above are divided by spp later; an early-stopped pixel adds nothing to them (the
+      // catcher has no diffuse or albedo), so that stays right.
       sum /= float(n);
       rad[rx] = {sum.x(), sum.y(), sum.z()};
       alpha[rx] = float(covered) / float(n);
