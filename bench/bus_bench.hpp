@@ -12,9 +12,9 @@ struct BusBenchConfig {
   int small_size = 1024;           // bytes
   int small_count = 200000;
   int image_size = 6 * 1024 * 1024;
-  int image_count = 150;
+  int image_count = 300;
   int latency_count = 5000;
-  int repeats = 3;                 // best of N per measurement, against scheduling noise
+  int repeats = 5;                 // median of N per measurement, against scheduling noise
 };
 
 // Runs every measurement and returns the report (see bench/README.md for its fields).

@@ -84,8 +84,15 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
 }
 
 void write_stacked_bars_png(const std::filesystem::path& file, const std::string& title, const std::string& x_label,
-                            const std::vector<StackedBar>& bars) {
-  const int w = 1000, left = 260, right = 40, top = 60, bar_h = 34, gap = 18, legend_h = 40;
+                            const std::vector<StackedBar>& bars, const char* total_format) {
+  // The label column is as wide as the longest label, so none is cut off.
+  int label_w = 0;
+  for (const auto& b : bars) {
+    int baseline = 0;
+    label_w = std::max(label_w, cv::getTextSize(b.label, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline).width);
+  }
+  const int left = std::max(260, 10 + label_w + 16), w = left + 740, right = 40, top = 60, bar_h = 34, gap = 18,
+            legend_h = 40;
   const int h = top + int(bars.size()) * (bar_h + gap) + 60 + legend_h;
   cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
   const cv::Scalar ink(40, 40, 40), grid(225, 225, 225);
@@ -105,7 +112,7 @@ void write_stacked_bars_png(const std::filesystem::path& file, const std::string
   for (int k = 0; k <= 5; ++k) {
     const double x = x1 * k / 5;
     cv::line(img, {px(x), top}, {px(x), bottom_axis}, grid, 1);
-    cv::putText(img, cv::format(x < 10 ? "%.1f" : "%.0f", x), {px(x) - 12, bottom_axis + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+    cv::putText(img, cv::format(x < 2 ? "%.2f" : x < 10 ? "%.1f" : "%.0f", x), {px(x) - 12, bottom_axis + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
                 ink, 1, cv::LINE_AA);
   }
   put_title(img, title, 20, ink);
@@ -119,7 +126,7 @@ void write_stacked_bars_png(const std::filesystem::path& file, const std::string
       cv::rectangle(img, {px(at), y}, {std::max(px(at) + 1, px(at + v)), y + bar_h}, colors[c % 6], cv::FILLED);
       at += v;
     }
-    cv::putText(img, cv::format("%.1f s", at), {px(at) + 6, y + bar_h / 2 + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
+    cv::putText(img, cv::format(total_format, at), {px(at) + 6, y + bar_h / 2 + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
                 cv::LINE_AA);
   }
   int lx = 20;

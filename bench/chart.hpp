@@ -30,7 +30,8 @@ struct StackedBar {
   std::string label;
   std::vector<std::pair<std::string, double>> segments;
 };
+// total_format: how each bar's total is printed after it (printf, one double).
 void write_stacked_bars_png(const std::filesystem::path& file, const std::string& title, const std::string& x_label,
-                            const std::vector<StackedBar>& bars);
+                            const std::vector<StackedBar>& bars, const char* total_format = "%.1f s");
 
 }  // namespace chatsim::bench

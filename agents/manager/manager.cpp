@@ -6,6 +6,7 @@
 #include "agents/core/scene_cache.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
+#include "common/util/preset_names.hpp"
 
 namespace chatsim::agents::manager {
 namespace {
@@ -447,8 +448,9 @@ class ManagerAgent : public Agent {
       return AgentOutcome::failure(ErrorKind::BadRequest, "no scene given: pass the scene directory (--scene DIR)");
     // Checked before the round changes the conversation, so a typo loses nothing.
     const std::string preset = call.args.value("preset", std::string());
-    if (!preset.empty() && preset != "draft" && preset != "fast" && preset != "quality")
-      return AgentOutcome::failure(ErrorKind::BadRequest, "unknown rendering preset '" + preset + "' (use draft, fast or quality)");
+    if (!preset.empty() && !is_preset_name(preset))
+      return AgentOutcome::failure(ErrorKind::BadRequest,
+                                   "unknown rendering preset '" + preset + "' (use " + std::string(kPresetChoices) + ")");
     try {
       const auto r = manager_.chat(id, call.scene, call.args.value("command", std::string()));
       json result{{"message", r.message}, {"edit_state", r.edit_state}};

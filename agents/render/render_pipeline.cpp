@@ -10,6 +10,7 @@
 #include "agents/render/render_job.hpp"
 #include "agents/render/result_writer.hpp"
 #include "render/image_io.hpp"
+#include "common/util/preset_names.hpp"
 
 namespace chatsim::agents::render {
 namespace fs = std::filesystem;
@@ -78,7 +79,7 @@ RenderPreset render_preset(const std::string& name) {
   if (name == "draft") return {"draft", 8};
   if (name.empty() || name == "fast") return {"fast", 32};
   if (name == "quality") return {"quality", 128};
-  throw std::invalid_argument("unknown rendering preset '" + name + "' (use draft, fast or quality)");
+  throw std::invalid_argument("unknown rendering preset '" + name + "' (use " + std::string(kPresetChoices) + ")");
 }
 
 AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& task, const PipelineProgress& progress,

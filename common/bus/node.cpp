@@ -29,10 +29,15 @@ std::string host_name() {
   return buf;
 }
 
-void configure(zmq::socket_t& s, const NodeOptions& o) {
+// Direct-link sockets: loopback only, where direct links are used only without encryption.
+void configure_unencrypted(zmq::socket_t& s, const NodeOptions& o) {
   s.set(zmq::sockopt::linger, o.linger_ms);
   s.set(zmq::sockopt::sndhwm, o.send_hwm);
   s.set(zmq::sockopt::rcvhwm, o.receive_hwm);
+}
+
+void configure(zmq::socket_t& s, const NodeOptions& o) {
+  configure_unencrypted(s, o);
   apply_curve_client(s, o.curve);
 }
 
@@ -51,23 +56,45 @@ flatbuffers::Offset<flatbuffers::String> optional_string(flatbuffers::FlatBuffer
   return s.empty() ? flatbuffers::Offset<flatbuffers::String>() : fbb.CreateString(s);
 }
 
-// Wraps payload in an Envelope with its header and sends it as [topic, body] without copying
-// the body. Shared by publish() and the heartbeat thread (each with its own socket).
-bool send_envelope(zmq::socket_t& socket, std::string_view topic, std::string_view sender,
-                   uint64_t instance, uint64_t seq, flatbuffers::FlatBufferBuilder& fbb,
-                   msgs::Payload type, flatbuffers::Offset<void> payload,
-                   const PublishOptions& options) {
+// Finishes payload in fbb as an Envelope with its header; the buffer becomes the message body
+// without a copy.
+zmq::message_t envelope_body(std::string_view topic, std::string_view sender, uint64_t instance,
+                             uint64_t seq, flatbuffers::FlatBufferBuilder& fbb, msgs::Payload type,
+                             flatbuffers::Offset<void> payload, const PublishOptions& options) {
   auto header = msgs::CreateHeader(fbb, fbb.CreateString(topic), fbb.CreateString(sender), instance,
                                    seq, now_ns(), optional_string(fbb, options.correlation_id),
-                                   optional_string(fbb, options.reply_to), options.deadline_ns);
+                                   optional_string(fbb, options.reply_to), options.deadline_ns,
+                                   optional_string(fbb, options.reply_endpoint));
   msgs::FinishEnvelopeBuffer(fbb, msgs::CreateEnvelope(fbb, header, type, payload));
+  return take_buffer(fbb);
+}
+
+// Sends [topic, body]; false (nothing sent) when the socket would block.
+bool send_frames(zmq::socket_t& socket, std::string_view topic, zmq::message_t& body) {
   zmq::message_t topic_frame(topic.data(), topic.size());
-  zmq::message_t body = take_buffer(fbb);
   if (!socket.send(topic_frame, zmq::send_flags::sndmore | zmq::send_flags::dontwait)) return false;
   // Once the first frame is queued the second always is: ZeroMQ queues multipart atomically.
   socket.send(body, zmq::send_flags::none);
   return true;
 }
+
+// Shared by publish() and the heartbeat thread (each with its own socket).
+bool send_envelope(zmq::socket_t& socket, std::string_view topic, std::string_view sender,
+                   uint64_t instance, uint64_t seq, flatbuffers::FlatBufferBuilder& fbb,
+                   msgs::Payload type, flatbuffers::Offset<void> payload,
+                   const PublishOptions& options) {
+  zmq::message_t body = envelope_body(topic, sender, instance, seq, fbb, type, payload, options);
+  return send_frames(socket, topic, body);
+}
+
+// Direct links only where every peer can reach a loopback inbox and nothing is encrypted.
+bool direct_links_possible(const NodeOptions& o) {
+  if (!o.direct_links || o.curve.enabled()) return false;
+  const std::string pub = split_bus_endpoint(o.bus).publish;
+  return starts_with(pub, "tcp://127.") || starts_with(pub, "tcp://localhost:");
+}
+
+constexpr size_t kMaxOutboxes = 8;
 
 }  // namespace
 
@@ -88,7 +115,8 @@ Node::~Node() { shutdown(); }
 void Node::start() {
   if (started_) return;
   const BusEndpoints ep = split_bus_endpoint(options_.bus);
-  pub_ = std::make_unique<zmq::socket_t>(*context_, zmq::socket_type::pub);
+  // XPUB, used as a PUB that can also read which prefixes are subscribed (see tapped()).
+  pub_ = std::make_unique<zmq::socket_t>(*context_, zmq::socket_type::xpub);
   sub_ = std::make_unique<zmq::socket_t>(*context_, zmq::socket_type::sub);
   configure(*pub_, options_);
   configure(*sub_, options_);
@@ -96,8 +124,11 @@ void Node::start() {
   sub_->connect(ep.subscribe);
   start_mono_s_ = mono_s();
   started_ = true;
-  sub_->set(zmq::sockopt::subscribe, reply_topic_);
-  for (const auto& s : subscriptions_) sub_->set(zmq::sockopt::subscribe, s.topic);
+  if (direct_links_possible(options_)) open_inbox();
+  // With an inbox, responses arrive there; the proxy would only add a second copy.
+  if (inbox_endpoint_.empty()) sub_->set(zmq::sockopt::subscribe, reply_topic_);
+  for (const auto& s : subscriptions_)
+    if (!s.direct_only) sub_->set(zmq::sockopt::subscribe, s.topic);
   sync();
   if (options_.heartbeat_period.count() > 0) {
     heartbeat_thread_ = std::thread([this] { heartbeat_loop(); });
@@ -113,6 +144,69 @@ void Node::shutdown() {
   if (heartbeat_thread_.joinable()) heartbeat_thread_.join();
   if (sub_) sub_->close();
   if (pub_) pub_->close();
+  if (inbox_) inbox_->close();
+  for (auto& [endpoint, socket] : outboxes_) socket->close();
+}
+
+void Node::open_inbox() {
+  inbox_ = std::make_unique<zmq::socket_t>(*context_, zmq::socket_type::pull);
+  configure_unencrypted(*inbox_, options_);
+  inbox_->bind("tcp://127.0.0.1:0");
+  inbox_endpoint_ = inbox_->get(zmq::sockopt::last_endpoint);
+}
+
+zmq::socket_t& Node::outbox(const std::string& inbox) {
+  auto it = std::find_if(outboxes_.begin(), outboxes_.end(), [&](const auto& o) { return o.first == inbox; });
+  if (it != outboxes_.end()) {
+    std::rotate(it, it + 1, outboxes_.end());  // most recently used last
+    return *outboxes_.back().second;
+  }
+  if (outboxes_.size() >= kMaxOutboxes) outboxes_.erase(outboxes_.begin());  // closes it
+  auto socket = std::make_unique<zmq::socket_t>(*context_, zmq::socket_type::push);
+  configure_unencrypted(*socket, options_);
+  socket->connect(inbox);  // queues from now on, before the connection completes
+  outboxes_.emplace_back(inbox, std::move(socket));
+  return *outboxes_.back().second;
+}
+
+PublishStatus Node::send_direct(const std::string& inbox, std::string_view topic,
+                                flatbuffers::FlatBufferBuilder& fbb, msgs::Payload type,
+                                flatbuffers::Offset<void> payload, const PublishOptions& options) {
+  if (!started_ || shut_down_) throw BusError("node '" + options_.name + "' is not running");
+  zmq::message_t body = envelope_body(topic, options_.name, instance_, next_seq(topic), fbb, type,
+                                      payload, options);
+  zmq::message_t tap_copy;
+  tap_copy.copy(body);  // shares the bytes: no copy of a large body
+  if (!outbox(inbox).send(body, zmq::send_flags::dontwait)) return PublishStatus::WouldBlock;
+  if (tapped(topic)) (void)send_frames(*pub_, topic, tap_copy);
+  stats_.sent.fetch_add(1, std::memory_order_relaxed);
+  return PublishStatus::Sent;
+}
+
+bool Node::tapped(std::string_view topic) {
+  read_subscription_changes();
+  return std::any_of(subscribed_.begin(), subscribed_.end(),
+                     [&](const auto& s) { return starts_with(topic, s.first); });
+}
+
+void Node::read_subscription_changes() {
+  // What the proxy forwards to this publisher: 1 or 0, then the prefix. Read often, as XPUB
+  // keeps them until read.
+  zmq::message_t change;
+  while (pub_->recv(change, zmq::recv_flags::dontwait)) {
+    const std::string_view bytes = change.to_string_view();
+    if (bytes.empty()) continue;
+    const std::string prefix(bytes.substr(1));
+    if (bytes[0] == 1) {
+      ++subscribed_[prefix];
+    } else if (auto it = subscribed_.find(prefix); it != subscribed_.end() && --it->second <= 0) {
+      subscribed_.erase(it);
+    }
+  }
+}
+
+void Node::subscribe_direct(const std::string& topic, Handler handler) {
+  subscriptions_.push_back({topic, false, std::move(handler), true});
 }
 
 void Node::subscribe(const std::string& topic, Handler handler) {
@@ -124,8 +218,9 @@ void Node::subscribe_prefix(const std::string& prefix, Handler handler) {
 }
 
 void Node::add_subscription(Subscription sub) {
-  const bool known = std::any_of(subscriptions_.begin(), subscriptions_.end(),
-                                 [&](const Subscription& s) { return s.topic == sub.topic; });
+  const bool known = std::any_of(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
+    return s.topic == sub.topic && !s.direct_only;
+  });
   subscriptions_.push_back(std::move(sub));
   if (started_ && !known) {
     sub_->set(zmq::sockopt::subscribe, subscriptions_.back().topic);
@@ -153,6 +248,7 @@ PublishStatus Node::publish(std::string_view topic, flatbuffers::FlatBufferBuild
                             msgs::Payload type, flatbuffers::Offset<void> payload,
                             const PublishOptions& options) {
   if (!started_ || shut_down_) throw BusError("node '" + options_.name + "' is not running");
+  read_subscription_changes();
   if (!send_envelope(*pub_, topic, options_.name, instance_, next_seq(topic), fbb, type, payload,
                      options)) {
     return PublishStatus::WouldBlock;
@@ -162,35 +258,64 @@ PublishStatus Node::publish(std::string_view topic, flatbuffers::FlatBufferBuild
 }
 
 std::optional<Message> Node::receive(std::chrono::milliseconds timeout) {
-  zmq::pollitem_t item{sub_->handle(), 0, ZMQ_POLLIN, 0};
-  try {
-    if (zmq::poll(&item, 1, timeout) == 0) return std::nullopt;
-  } catch (const zmq::error_t& e) {
-    if (e.num() == EINTR) return std::nullopt;  // a signal: let the caller look at its stop flag
-    throw;
-  }
-  zmq::message_t topic_frame;
-  if (!sub_->recv(topic_frame, zmq::recv_flags::dontwait)) return std::nullopt;
-  bool well_framed = topic_frame.more();
-  zmq::message_t body;
-  if (well_framed) {
-    (void)sub_->recv(body, zmq::recv_flags::none);
-    while (body.more()) {  // extra frames: drain and reject the whole message
-      well_framed = false;
-      zmq::message_t extra;
-      (void)sub_->recv(extra, zmq::recv_flags::none);
-      if (!extra.more()) break;
+  // Take what already waits before polling: a poll per message would cost more than the
+  // message under load.
+  zmq::socket_t* sockets[2] = {sub_.get(), inbox_.get()};
+  const size_t count = inbox_ ? 2 : 1;
+  inbox_first_ = !inbox_first_ && inbox_;
+  if (inbox_first_) std::swap(sockets[0], sockets[1]);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t i = 0; i < count; ++i) {
+      bool took = false;
+      auto m = take_from(*sockets[i], took);
+      if (took) return m;  // nullopt here: it was invalid, dropped and counted
     }
+    if (pass == 1 || timeout.count() <= 0) break;
+    read_subscription_changes();  // idle: a good moment
+    zmq::pollitem_t items[2] = {{sockets[0]->handle(), 0, ZMQ_POLLIN, 0},
+                                {count == 2 ? sockets[1]->handle() : nullptr, 0, ZMQ_POLLIN, 0}};
+    try {
+      if (zmq::poll(items, count, timeout) == 0) return std::nullopt;
+    } catch (const zmq::error_t& e) {
+      if (e.num() == EINTR) return std::nullopt;  // a signal: let the caller look at its stop flag
+      throw;
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Message> Node::take_from(zmq::socket_t& socket, bool& took) {
+  // Through the proxy: [topic, envelope] (subscribers filter on the topic frame). In the inbox:
+  // [envelope] alone, since nothing there filters: one frame less per message.
+  const bool topic_framed = &socket != inbox_.get();
+  zmq::message_t first;
+  if (!socket.recv(first, zmq::recv_flags::dontwait)) return std::nullopt;
+  took = true;
+  bool well_framed = true;
+  zmq::message_t topic_frame, body;
+  if (topic_framed) {
+    topic_frame = std::move(first);
+    well_framed = topic_frame.more();
+    if (well_framed) (void)socket.recv(body, zmq::recv_flags::none);
+  } else {
+    body = std::move(first);
+  }
+  for (bool more = body.more(); more;) {  // extra frames: drain and reject the whole message
+    well_framed = false;
+    zmq::message_t extra;
+    (void)socket.recv(extra, zmq::recv_flags::none);
+    more = extra.more();
   }
   stats_.received.fetch_add(1, std::memory_order_relaxed);
   Message message(std::move(body));
   const bool valid = well_framed && message.verify() &&
-                     message.topic() == topic_frame.to_string_view();
+                     (!topic_framed || message.topic() == topic_frame.to_string_view());
   if (!valid) {
     const uint64_t n = stats_.invalid.fetch_add(1, std::memory_order_relaxed) + 1;
     if (n <= 5 || n % 1000 == 0) {
-      spdlog::warn("[{}] dropped an invalid message on '{}' ({} bytes; {} invalid so far)",
-                   options_.name, topic_frame.to_string_view(), message.size(), n);
+      spdlog::warn("[{}] dropped an invalid message {} ({} bytes; {} invalid so far)", options_.name,
+                   topic_framed ? "on '" + topic_frame.to_string() + "'" : std::string("in the inbox"),
+                   message.size(), n);
     }
     return std::nullopt;
   }
@@ -251,7 +376,8 @@ CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fb
                                   std::to_string(++call_counter_);
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   PublishOptions po{correlation, reply_topic_,
-                    now_ns() + std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count()};
+                    now_ns() + std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count(),
+                    inbox_endpoint_};
   CallResult result;
   if (publish(topic, fbb, type, payload, po) != PublishStatus::Sent) {
     result.error = msgs::ErrorCode::Unavailable;
@@ -302,7 +428,8 @@ std::vector<CallResult> Node::call_many(std::vector<Request>& requests, std::chr
   for (size_t i = 0; i < requests.size(); ++i) {
     correlation[i] = options_.name + "/" + topics::hex(instance_) + "/" + std::to_string(++call_counter_);
     PublishOptions po{correlation[i], reply_topic_,
-                      now_ns() + std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count()};
+                      now_ns() + std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count(),
+                      inbox_endpoint_};
     if (publish(requests[i].topic, *requests[i].fbb, requests[i].type, requests[i].payload, po) != PublishStatus::Sent) {
       results[i].error = msgs::ErrorCode::Unavailable;
       results[i].error_message = "could not send on '" + requests[i].topic + "' (queue full)";
@@ -383,6 +510,8 @@ PublishStatus Node::respond(const Message& request, flatbuffers::FlatBufferBuild
   }
   PublishOptions po;
   po.correlation_id = std::string(request.correlation_id());
+  const std::string_view inbox = view(request.header().reply_endpoint());
+  if (!inbox.empty()) return send_direct(std::string(inbox), reply_to, fbb, type, payload, po);
   return publish(reply_to, fbb, type, payload, po);
 }
 

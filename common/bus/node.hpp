@@ -2,6 +2,12 @@
 // A bus node: one PUB and one SUB socket connected to the proxy, a heartbeat thread, and
 // request/response with correlation ids and deadlines. Single-threaded API: call everything
 // but stats() from the thread that created the node.
+//
+// Direct links (as ROS nodes talk peer to peer once the master introduced them): on a
+// loopback, unencrypted bus a node binds an inbox (PULL) and its requests carry the inbox's
+// endpoint, so responses skip the proxy's two hops; send_direct() streams to an inbox the
+// same way. A copy goes through the proxy too when a tap or recorder subscribes to the
+// topic. Elsewhere everything goes through the proxy.
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -35,6 +41,7 @@ struct NodeOptions {
   int send_hwm = 10000;
   int receive_hwm = 10000;
   CurveClient curve;                // empty: no encryption or authentication
+  bool direct_links = true;         // used only where possible (see above)
 };
 
 struct NodeStats {
@@ -53,6 +60,7 @@ struct PublishOptions {
   std::string correlation_id;
   std::string reply_to;
   int64_t deadline_ns = 0;
+  std::string reply_endpoint;       // the requester's inbox (direct links)
 };
 
 // What a request turned into: a response, or an error saying why there is none.
@@ -92,6 +100,19 @@ class Node {
   PublishStatus publish(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb,
                         msgs::Payload type, flatbuffers::Offset<void> payload,
                         const PublishOptions& options = {});
+
+  // Direct links. The inbox endpoint ("tcp://127.0.0.1:PORT"), or "" where direct links are
+  // off (encrypted or non-loopback bus, or NodeOptions::direct_links false). Call after start().
+  const std::string& inbox() const { return inbox_endpoint_; }
+  // Sends to another node's inbox without the proxy; lossless while the peer lives (PUSH
+  // queues until connected). Also sent through the proxy when tapped. The receiver handles the
+  // topic with subscribe_direct(). Throws BusError if direct links are off here.
+  PublishStatus send_direct(const std::string& inbox, std::string_view topic,
+                            flatbuffers::FlatBufferBuilder& fbb, msgs::Payload type,
+                            flatbuffers::Offset<void> payload, const PublishOptions& options = {});
+  // A handler for messages arriving in the inbox only: no proxy subscription (which would
+  // deliver the tap copy of each message a second time).
+  void subscribe_direct(const std::string& topic, Handler handler);
 
   // Sends an already built Envelope unchanged (bag play): its header keeps the original sender
   // and sequence number. The bytes must verify as an Envelope whose topic is `topic`.
@@ -158,10 +179,17 @@ class Node {
     std::string topic;
     bool prefix;
     Handler handler;
+    bool direct_only = false;
   };
 
   void add_subscription(Subscription sub);
   std::optional<Message> receive(std::chrono::milliseconds timeout);
+  // One waiting message, if any; `took` tells an invalid (dropped) one from none waiting.
+  std::optional<Message> take_from(zmq::socket_t& socket, bool& took);
+  void open_inbox();
+  zmq::socket_t& outbox(const std::string& inbox);
+  bool tapped(std::string_view topic);  // does anyone subscribe to topic through the proxy?
+  void read_subscription_changes();
   void dispatch(const Message& message);
   void heartbeat_loop();
   void probe_until_echo(const std::string& probe_topic);
@@ -171,6 +199,12 @@ class Node {
   std::shared_ptr<zmq::context_t> context_;
   std::unique_ptr<zmq::socket_t> pub_;
   std::unique_ptr<zmq::socket_t> sub_;
+  std::unique_ptr<zmq::socket_t> inbox_;  // PULL, bound on loopback (direct links)
+  std::string inbox_endpoint_;
+  // PUSH sockets to peers' inboxes, most recently used last; a few are kept.
+  std::vector<std::pair<std::string, std::unique_ptr<zmq::socket_t>>> outboxes_;
+  std::map<std::string, int, std::less<>> subscribed_;  // through the proxy, by prefix (tapped())
+  bool inbox_first_ = false;  // alternates which socket is read first: neither starves
   uint64_t instance_;
   std::string reply_topic_;
   std::vector<Subscription> subscriptions_;

@@ -22,6 +22,7 @@
 #include "common/util/exit_codes.hpp"
 #include "processes/cli/chat_session.hpp"
 #include "processes/cli/commands.hpp"
+#include "common/util/preset_names.hpp"
 
 namespace chatsim::cli {
 void write_report(const std::filesystem::path& file, const nlohmann::json& report);
@@ -166,7 +167,7 @@ void add_e2e_bench_command(CLI::App& bench, int& result) {
   e2e->add_option("--removal", a->removal, "the command whose result is compared with the clean plates");
   e2e->add_option("--presets", a->presets, "rendering presets, the first one the baseline")
       ->delimiter(',')
-      ->check(CLI::IsMember({"draft", "fast", "quality"}));
+      ->check(CLI::IsMember(preset_names()));
   e2e->add_option("--work", a->work, "keep the results in this folder (default: a temporary one, removed after)");
   e2e->add_option("--timeout-s", a->timeout_s, "how long to wait for each round")->check(CLI::PositiveNumber);
   e2e->callback([a, &result] { result = run_e2e(*a); });

@@ -22,6 +22,7 @@
 #include "processes/cli/commands.hpp"
 #include "processes/cli/chat_session.hpp"
 #include "processes/cli/process_graph.hpp"
+#include "common/util/preset_names.hpp"
 
 namespace chatsim::cli {
 namespace {
@@ -133,7 +134,7 @@ void add_run_commands(CLI::App& app, int& result) {
   run->add_option("--out", ra->out, "result folder (replaced; written whole or not at all)");
   run->add_option("--bus", ra->bus, "use this running bus instead of starting processes");
   run->add_option("--conversation", ra->conversation, "conversation id (default: a fresh one)");
-  run->add_option("--preset", ra->preset, kPresetHelp)->check(CLI::IsMember({"draft", "fast", "quality"}));
+  run->add_option("--preset", ra->preset, kPresetHelp)->check(CLI::IsMember(preset_names()));
   run->add_option("--timeout-s", ra->timeout_s, "how long to wait for the result (training on first use takes minutes)")
       ->check(CLI::PositiveNumber);
   run->callback([ra, &result] { result = run_run(*ra); });
@@ -143,7 +144,7 @@ void add_run_commands(CLI::App& app, int& result) {
   chat->add_option("--scene", ca->scene, "scene directory (with images)")->required();
   chat->add_option("--out-root", ca->out_root, "folder for the rounds' results");
   chat->add_option("--bus", ca->bus, "use this running bus instead of starting processes");
-  chat->add_option("--preset", ca->preset, kPresetHelp)->check(CLI::IsMember({"draft", "fast", "quality"}));
+  chat->add_option("--preset", ca->preset, kPresetHelp)->check(CLI::IsMember(preset_names()));
   chat->add_option("--timeout-s", ca->timeout_s, "how long to wait for each round")->check(CLI::PositiveNumber);
   chat->add_flag("--no-render", ca->no_render, "decide only (print what the agents did)");
   chat->callback([ca, &result] { result = run_chat(*ca); });

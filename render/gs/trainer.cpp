@@ -16,6 +16,7 @@
 #include "render/color.hpp"
 #include "render/image_io.hpp"
 #include "render/parallel.hpp"
+#include "common/util/preset_names.hpp"
 
 namespace chatsim::render::gs {
 namespace {
@@ -28,7 +29,7 @@ Preset preset(const std::string& name) {
   if (name == "quality") return {6000, 960, 1500000};
   if (name == "draft") return {500, 480, 150000};
   if (name == "fast") return {2000, 640, 600000};
-  throw std::invalid_argument("unknown preset '" + name + "' (use draft, fast or quality)");
+  throw std::invalid_argument("unknown preset '" + name + "' (use " + std::string(kPresetChoices) + ")");
 }
 
 struct TrainImage {

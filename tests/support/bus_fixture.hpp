@@ -1,6 +1,7 @@
 #pragma once
 // An in-process bus proxy on an OS-chosen loopback port, for tests.
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <string>
 #include <thread>
@@ -22,6 +23,7 @@ class InProcessBus {
   }
   const std::string& endpoint() const { return proxy_.endpoint(); }
   std::shared_ptr<zmq::context_t> context() const { return context_; }
+  const bus::ProxyStats& proxy_stats() const { return proxy_.stats(); }
 
   bus::NodeOptions options(const std::string& name, int heartbeat_ms = 0) const {
     bus::NodeOptions o;
@@ -39,5 +41,13 @@ class InProcessBus {
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
+
+// Spins node until pred() or timeout; true if pred() became true.
+template <class Pred>
+bool spin_until(bus::Node& node, Pred pred, std::chrono::milliseconds timeout = std::chrono::seconds(5)) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  while (!pred() && std::chrono::steady_clock::now() < end) node.spin_once(std::chrono::milliseconds(10));
+  return pred();
+}
 
 }  // namespace chatsim::test_support

@@ -33,13 +33,7 @@ void send(zmq::socket_t& pub, const std::string& topic, zmq::message_t body) {
   pub.send(body, zmq::send_flags::none);
 }
 
-// Spins node until pred() or timeout; true if pred() became true.
-template <class Pred>
-bool spin_until(bus::Node& node, Pred pred, std::chrono::milliseconds timeout = 5s) {
-  const auto end = std::chrono::steady_clock::now() + timeout;
-  while (!pred() && std::chrono::steady_clock::now() < end) node.spin_once(10ms);
-  return pred();
-}
+using test_support::spin_until;
 
 // A raw ZeroMQ publisher on the bus, for sending what a Node never would. It is ready once a
 // warm-up message reached `receiver` (a started node): the proxy has passed it the subscriptions.

@@ -41,4 +41,29 @@ TEST(Chart, StackedBarsShowEverySegment) {
   EXPECT_GT(second, 2 * first);  // three times as long, minus the legend swatches
 }
 
+TEST(Chart, LongBarLabelsAreNotCoveredByTheBars) {
+  const fs::path file = fs::temp_directory_path() / ("chatsim-labels-" + std::to_string(::getpid()) + ".png");
+  const std::string label = "fast preset, model cached, stage radiance uncompressed (run 2)";
+  chatsim::bench::write_stacked_bars_png(file, "t", "seconds", {{label, {{"one", 10.0}}}});
+  const cv::Mat img = cv::imread(file.string());
+  fs::remove(file);
+  ASSERT_FALSE(img.empty());
+  // In the bar's rows (top 60, height 34): the label's dark ink ends before the bar starts.
+  int last_ink = -1, first_bar = img.cols;
+  for (int y = 60; y < 94; ++y) {
+    bool bar_seen = false;  // ink right of the bar is its total ("10.0 s")
+    for (int x = 0; x < img.cols; ++x) {
+      const auto p = img.at<cv::Vec3b>(y, x);
+      if (p == cv::Vec3b(200, 80, 30)) {
+        first_bar = std::min(first_bar, x);
+        bar_seen = true;
+      } else if (!bar_seen && p[0] < 100 && p[1] < 100 && p[2] < 100) {
+        last_ink = std::max(last_ink, x);
+      }
+    }
+  }
+  EXPECT_GT(last_ink, 300);  // the label is long: wider than the old fixed column
+  EXPECT_LT(last_ink, first_bar);
+}
+
 }  // namespace
