@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "common/util/exit_codes.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "render/inpaint/deletion_eval.hpp"
 
@@ -16,7 +17,7 @@ struct EvalDeletionArgs {
 };
 
 int run_eval_deletion(const EvalDeletionArgs& a) {
-  try {
+  return exit_code_of([&] {
     const auto s = scene::load_scene(a.scene);
     render::inpaint::DeletionEvalOptions o;
     o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
@@ -27,16 +28,7 @@ int run_eval_deletion(const EvalDeletionArgs& a) {
     if (!a.out.empty()) std::ofstream(a.out) << r.dump(1) << "\n";
     std::cout << r.dump(1) << "\n";
     return exit_code::kOk;
-  } catch (const scene::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
+  });
 }
 
 }  // namespace

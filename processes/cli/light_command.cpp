@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/util/exit_codes.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "render/light/light_estimate.hpp"
 #include "render/light/light_eval.hpp"
@@ -21,7 +22,7 @@ struct EstimateArgs {
 };
 
 int run_estimate(const EstimateArgs& a) {
-  try {
+  return exit_code_of([&] {
     const auto s = scene::load_scene(a.scene);
     const auto views = render::light::scene_light_views(s, a.frame);
     if (views.empty()) {
@@ -32,13 +33,7 @@ int run_estimate(const EstimateArgs& a) {
     est.dome().write_exr(a.out);
     std::cout << est.to_json(fs::path(a.out).filename().string()).dump(1) << "\n";
     return exit_code::kOk;
-  } catch (const scene::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
+  });
 }
 
 struct EvalLightArgs {

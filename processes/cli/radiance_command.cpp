@@ -8,6 +8,7 @@
 
 #include "common/util/exit_codes.hpp"
 #include "common/util/progress.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
@@ -83,7 +84,7 @@ struct RenderArgs {
 };
 
 int run_render(const RenderArgs& a) {
-  try {
+  return exit_code_of([&] {
     const auto s = scene::load_scene(a.scene);
     const auto model = render::gs::RadianceField::load(a.model);
     Eigen::Vector3d offset;
@@ -127,13 +128,7 @@ int run_render(const RenderArgs& a) {
     std::cout << "rendered " << done << " images into " << a.out << " (" << std::fixed << std::setprecision(3)
               << (done ? seconds / done : 0) << " s per image)\n";
     return exit_code::kOk;
-  } catch (const scene::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
+  });
 }
 
 struct NvsArgs {
@@ -143,7 +138,7 @@ struct NvsArgs {
 };
 
 int run_eval_nvs(const NvsArgs& a) {
-  try {
+  return exit_code_of([&] {
     const auto s = scene::load_scene(a.scene);
     const auto model = render::gs::RadianceField::load(a.model);
     render::gs::NvsOptions o;
@@ -154,13 +149,7 @@ int run_eval_nvs(const NvsArgs& a) {
     const auto r = render::gs::evaluate_nvs(model, s, o);
     std::cout << r.dump(1) << "\n";
     return exit_code::kOk;
-  } catch (const scene::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
+  });
 }
 
 }  // namespace

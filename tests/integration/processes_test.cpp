@@ -54,6 +54,26 @@ TEST(Processes, BadFlagsExitWithUsageCode) {
   EXPECT_EQ(WEXITSTATUS(*status), 2);
 }
 
+TEST(Processes, CommandsGivenAMissingSceneExitWithUsageCodeNamingIt) {
+  const auto dir = std::filesystem::temp_directory_path() / ("chatsim-missing-" + std::to_string(::getpid()));
+  const std::string scene = (dir / "no-such-scene").string(), log = (dir / "log.txt").string();
+  std::filesystem::create_directories(dir);
+  const std::vector<std::vector<std::string>> commands = {
+      {"light", "estimate", "--scene", scene, "--out", (dir / "sky.exr").string()},
+      {"render", "--model", (dir / "m.gs").string(), "--scene", scene, "--out", (dir / "out").string()},
+      {"eval", "nvs", "--scene", scene, "--model", (dir / "m.gs").string()},
+      {"eval", "deletion", "--scene", scene}};
+  for (auto args : commands) {
+    args.insert(args.begin(), bin("chatsim"));
+    ScopedProcess proc(test_support::spawn(args, log));
+    const auto status = proc.wait(10s);
+    ASSERT_TRUE(status) << args[1];
+    EXPECT_EQ(WEXITSTATUS(*status), 2) << args[1] << " " << args[2];
+    EXPECT_NE(test_support::read_file(log).find("no-such-scene"), std::string::npos) << test_support::read_file(log);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Processes, NoBusIsExitCode3) {
   ScopedProcess proc(test_support::spawn(
       {bin("chatsim-view"), "--bus", "tcp://127.0.0.1:1", "--handshake-timeout-ms", "300"}, "/dev/null"));
