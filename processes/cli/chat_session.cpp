@@ -32,7 +32,7 @@ ChatSession::ChatSession(const std::string& bus, const std::string& scene, std::
     const auto* p = m.payload<msgs::ChatProgress>();
     if (p == nullptr) return;
     const std::string conv(bus::view(p->conversation_id()));
-    if (!conv.empty() && conv != conversation_) return;  // someone else's round
+    if (!in_round_ || (!conv.empty() && conv != conversation_)) return;  // late, or someone else's round
     show(std::string(bus::view(p->stage())), p->fraction(), std::string(bus::view(p->message())));
   });
   node_->dispatch_during_calls(std::string(bus::topics::kChatProgress));
@@ -69,9 +69,11 @@ ChatSession::Outcome ChatSession::round(const std::string& command, const std::s
                                                  out_abs.c_str(), preset.c_str());
   const auto sent_to = liveness_.snapshot("manager", mono_s());
   show("decisions", 0, "the agents decide");
+  in_round_ = true;
   const auto r = node_->call(bus::topics::kChatRequest, fbb, msgs::Payload::ChatRequest, req.Union(),
                              std::chrono::milliseconds(int64_t(timeout_s * 1000)),
                              [&] { return liveness_.lost("manager", sent_to, mono_s()); });
+  in_round_ = false;
   if (bar_) bar_->finish();
   bar_.reset();
   if (!r.ok()) {

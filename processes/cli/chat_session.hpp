@@ -51,6 +51,9 @@ class ChatSession {
   std::unique_ptr<ProgressBar> bar_;
   std::string stage_;
   bool lost_ = false;
+  // Progress shows only while a round waits: the answer comes straight to this node's inbox
+  // and can overtake the round's last progress reports, which cross the proxy.
+  bool in_round_ = false;
 };
 
 }  // namespace chatsim::cli

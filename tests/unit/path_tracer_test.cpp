@@ -35,6 +35,25 @@ Eigen::Isometry3d look(const Eigen::Vector3d& eye, const Eigen::Vector3d& forwar
 
 double mean_channel(const cv::Mat& m, int c) { return cv::mean(m)[c]; }
 
+// A furnace test: a unit sphere of `material` under a uniform white sky (64 spp, the sky itself
+// not drawn); returns the mean radiance over the pixels it covers and their count.
+std::pair<double, int> furnace_sphere(const Material& material) {
+  RayScene rs;
+  const uint32_t m = rs.add_material(material);
+  rs.add_instance(rs.add_prototype(make_sphere(1, 48, 96), {m}), Eigen::Affine3f::Identity());
+  rs.commit();
+  const EnvMap sky = EnvMap::uniform(Rgb::Constant(1.0f));
+  Lighting light;
+  light.sky = &sky;
+  RenderSettings s;
+  s.spp = 64;
+  s.include_sky = false;
+  const scene::Camera cam = test_camera(16, 16, 10);  // only the sphere in view
+  const auto view = render_view(rs, light, cam, look({0, -8, 0}, {0, 1, 0}, {0, 0, 1}), s);
+  const cv::Mat covered = view.alpha > 0.999f;
+  return {cv::mean(view.radiance, covered)[0], cv::countNonZero(covered)};
+}
+
 TEST(EnvMap, PdfIntegratesToOneAndSamplesFollowIt) {
   Sky sky(SkyParams{});
   const EnvMap map = sky.to_env_map(128, 64);
@@ -86,22 +105,10 @@ TEST(PathTracer, DiffusePlaneUnderAUniformSkyReflectsAlbedoTimesSky) {
 }
 
 TEST(PathTracer, WhiteFurnaceSphereReflectsAlbedoTimesSkyWithEveryBounce) {
-  RayScene rs;
   const float albedo = 0.8f;
-  const uint32_t m = rs.add_material(Material::diffuse("white", Rgb::Constant(albedo)));
-  rs.add_instance(rs.add_prototype(make_sphere(1, 48, 96), {m}), Eigen::Affine3f::Identity());
-  rs.commit();
-  const EnvMap sky = EnvMap::uniform(Rgb::Constant(1.0f));
-  Lighting light;
-  light.sky = &sky;
-  RenderSettings s;
-  s.spp = 64;
-  s.include_sky = false;
-  const scene::Camera cam = test_camera(16, 16, 10);  // only the sphere in view
-  const auto view = render_view(rs, light, cam, look({0, -8, 0}, {0, 1, 0}, {0, 0, 1}), s);
-  cv::Mat covered = view.alpha > 0.999f;
-  EXPECT_GT(cv::countNonZero(covered), 100);
-  EXPECT_NEAR(cv::mean(view.radiance, covered)[0], albedo, 0.02);
+  const auto [mean, covered] = furnace_sphere(Material::diffuse("white", Rgb::Constant(albedo)));
+  EXPECT_GT(covered, 100);
+  EXPECT_NEAR(mean, albedo, 0.02);
 }
 
 TEST(PathTracer, SunLitPlaneFollowsLambertsCosineLaw) {
@@ -123,19 +130,7 @@ TEST(PathTracer, SunLitPlaneFollowsLambertsCosineLaw) {
 }
 
 TEST(PathTracer, MetalFurnaceLosesLittleEnergy) {
-  RayScene rs;
-  const uint32_t m = rs.add_material(Material::metal("chrome", Rgb::Ones(), 0.3f));
-  rs.add_instance(rs.add_prototype(make_sphere(1, 48, 96), {m}), Eigen::Affine3f::Identity());
-  rs.commit();
-  const EnvMap sky = EnvMap::uniform(Rgb::Constant(1.0f));
-  Lighting light;
-  light.sky = &sky;
-  RenderSettings s;
-  s.spp = 64;
-  s.include_sky = false;
-  const auto view = render_view(rs, light, test_camera(16, 16, 10), look({0, -8, 0}, {0, 1, 0}, {0, 0, 1}), s);
-  const cv::Mat covered = view.alpha > 0.999f;
-  const double v = cv::mean(view.radiance, covered)[0];
+  const double v = furnace_sphere(Material::metal("chrome", Rgb::Ones(), 0.3f)).first;
   EXPECT_GT(v, 0.85);  // single-scattering GGX loses a few percent at this roughness
   EXPECT_LT(v, 1.01);
 }
