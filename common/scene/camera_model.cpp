@@ -1,5 +1,6 @@
 #include "common/scene/camera_model.hpp"
 
+#include <algorithm>
 #include <fstream>
 
 namespace chatsim::scene {
@@ -13,6 +14,25 @@ std::optional<Projection> project(const Camera& cam, const Eigen::Isometry3d& ca
   out.depth = p.z();
   out.in_image = out.pixel.x() >= 0 && out.pixel.y() >= 0 && out.pixel.x() < cam.width && out.pixel.y() < cam.height;
   return out;
+}
+
+std::vector<Eigen::Vector2d> project_clipped(const Camera& cam, const Eigen::Isometry3d& camera_to_world,
+                                             const std::vector<Eigen::Vector3d>& world, double near_m) {
+  const Eigen::Isometry3d w2c = camera_to_world.inverse();
+  std::vector<Eigen::Vector3d> in_front, behind;
+  for (const auto& w : world) {
+    const Eigen::Vector3d c = w2c * w;
+    (c.z() >= near_m ? in_front : behind).push_back(c);
+  }
+  std::vector<Eigen::Vector3d> clipped = in_front;
+  for (const auto& a : in_front)
+    for (const auto& b : behind) clipped.push_back(a + (b - a) * ((a.z() - near_m) / (a.z() - b.z())));
+  constexpr double kLimit = 1e5;
+  std::vector<Eigen::Vector2d> px;
+  for (const auto& c : clipped)
+    px.emplace_back(std::clamp(cam.fx * c.x() / c.z() + cam.cx, -kLimit, kLimit),
+                    std::clamp(cam.fy * c.y() / c.z() + cam.cy, -kLimit, kLimit));
+  return px;
 }
 
 Eigen::Vector3d unproject(const Camera& cam, const Eigen::Isometry3d& camera_to_world, const Eigen::Vector2d& px,

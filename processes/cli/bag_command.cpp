@@ -9,6 +9,7 @@
 #include "common/util/exit_codes.hpp"
 #include "common/util/log.hpp"
 #include "common/util/signals.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 
 namespace chatsim::cli {
@@ -26,21 +27,6 @@ struct BagArgs {
 };
 
 std::string endpoint(const std::string& bus) { return bus.empty() ? bus::default_bus_endpoint() : bus; }
-
-int guarded(const std::function<int()>& f) {
-  try {
-    return f();
-  } catch (const bus::BusError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kBusUnavailable;
-  } catch (const bag::McapError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
-}
 
 int run_record(const BagArgs& a) {
   if (a.topics.empty() && !a.all) {
@@ -116,17 +102,17 @@ void add_bag_command(CLI::App& app, int& result) {
   rec->add_option("-o,--output", args->out, "output file (default chatsim-<time>.mcap); written as FILE.part until complete");
   rec->add_option("--duration-s", args->duration_s, "stop after this long (default: until Ctrl-C)");
   rec->add_option("--bus", args->bus, "bus endpoint (default: $CHATSIM_BUS or tcp://127.0.0.1:7700)");
-  rec->callback([args, &result] { result = guarded([&] { return run_record(*args); }); });
+  rec->callback([args, &result] { result = exit_code_of([&] { return run_record(*args); }); });
   auto* info = bag->add_subcommand("info", "Topics, counts, duration and lost messages of a recording");
   info->add_option("file", args->file, "MCAP file")->required()->check(CLI::ExistingFile);
-  info->callback([args, &result] { result = guarded([&] { return run_info(*args); }); });
+  info->callback([args, &result] { result = exit_code_of([&] { return run_info(*args); }); });
   auto* play = bag->add_subcommand("play", "Republish a recording with its original timing (per-topic order kept)");
   play->add_option("file", args->file, "MCAP file")->required()->check(CLI::ExistingFile);
   play->add_option("--rate", args->rate, "speed factor; 0 = as fast as possible")->check(CLI::NonNegativeNumber);
   play->add_option("--topics", args->topics, "only these topics");
   play->add_flag("--loop", args->loop, "start again at the end until Ctrl-C");
   play->add_option("--bus", args->bus, "bus endpoint (default: $CHATSIM_BUS or tcp://127.0.0.1:7700)");
-  play->callback([args, &result] { result = guarded([&] { return run_play(*args); }); });
+  play->callback([args, &result] { result = exit_code_of([&] { return run_play(*args); }); });
 }
 
 }  // namespace chatsim::cli

@@ -12,6 +12,7 @@
 #include "common/util/exit_codes.hpp"
 #include "common/util/progress.hpp"
 #include "render/demo/demo_generate.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 
 namespace chatsim::cli {
@@ -23,16 +24,13 @@ struct SceneInfoArgs {
 };
 
 int run_info(const SceneInfoArgs& a) {
-  try {
+  return exit_code_of([&] {
     const auto scene = scene::load_scene(a.dir);
     const auto summary = scene::summarize(scene);
     if (a.json) std::cout << summary.dump(1) << "\n";
     else std::cout << scene::summary_text(summary);
     return exit_code::kOk;
-  } catch (const scene::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  }
+  });
 }
 
 struct DemoArgs {
@@ -117,7 +115,7 @@ int run_import(ImportArgs a) {
     }
   }
   a.options.lidar = !a.no_lidar;
-  try {
+  return exit_code_of([&] {
     const auto s = import::import_nuscenes(a.options, a.out, [](int done, int total, const std::string& what) {
       std::cerr << "\r  " << what << " " << done << "/" << total << std::flush;
       if (done == total) std::cerr << "\n";
@@ -127,13 +125,7 @@ int run_import(ImportArgs a) {
     std::cout << "wrote " << a.out << ": " << s.frames.size() << " frames, " << s.cameras.size() << " cameras, "
               << s.objects.size() << " objects (" << colored << " with an estimated colour), lanes derived from the ego path\n";
     return exit_code::kOk;
-  } catch (const import::ImportError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kUsage;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
+  });
 }
 
 }  // namespace

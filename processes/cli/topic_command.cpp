@@ -14,6 +14,7 @@
 #include "common/bus/topics.hpp"
 #include "common/util/exit_codes.hpp"
 #include "common/util/signals.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 
 namespace chatsim::cli {
@@ -119,18 +120,6 @@ int run_rate(const TopicArgs& a, bool bandwidth) {
   return exit_code::kOk;
 }
 
-int guarded(const std::function<int()>& f) {
-  try {
-    return f();
-  } catch (const bus::BusError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kBusUnavailable;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
-}
-
 }  // namespace
 
 void add_topic_command(CLI::App& app, int& result) {
@@ -141,22 +130,22 @@ void add_topic_command(CLI::App& app, int& result) {
   list->add_option("--duration-s", args->duration_s, "how long to listen")->check(CLI::PositiveNumber);
   list->add_flag("--all", args->all, "include probe and reply topics");
   list->add_option("--bus", args->bus, "bus endpoint (default: $CHATSIM_BUS or tcp://127.0.0.1:7700)");
-  list->callback([args, &result] { result = guarded([&] { return run_list(*args); }); });
+  list->callback([args, &result] { result = exit_code_of([&] { return run_list(*args); }); });
   auto* echo = topic->add_subcommand("echo", "Print each message on TOPIC as JSON (FlatBuffers reflection)");
   echo->add_option("topic", args->topic, "topic, e.g. /bus/heartbeat")->required();
   echo->add_option("--count,-n", args->count, "stop after this many (default: until Ctrl-C)");
   echo->add_option("--bus", args->bus, "bus endpoint (default: $CHATSIM_BUS or tcp://127.0.0.1:7700)");
-  echo->callback([args, &result] { result = guarded([&] { return run_echo(*args); }); });
+  echo->callback([args, &result] { result = exit_code_of([&] { return run_echo(*args); }); });
   auto* hz = topic->add_subcommand("hz", "Message rate on TOPIC, once a second");
   hz->add_option("topic", args->topic, "topic")->required();
   hz->add_option("--duration-s", args->duration_s, "stop after this long (0: until Ctrl-C)");
   hz->add_option("--bus", args->bus, "bus endpoint (default: $CHATSIM_BUS or tcp://127.0.0.1:7700)");
-  hz->callback([args, &result] { result = guarded([&] { return run_rate(*args, false); }); });
+  hz->callback([args, &result] { result = exit_code_of([&] { return run_rate(*args, false); }); });
   auto* bw = topic->add_subcommand("bw", "Bandwidth on TOPIC, once a second");
   bw->add_option("topic", args->topic, "topic")->required();
   bw->add_option("--duration-s", args->duration_s, "stop after this long (0: until Ctrl-C)");
   bw->add_option("--bus", args->bus, "bus endpoint (default: $CHATSIM_BUS or tcp://127.0.0.1:7700)");
-  bw->callback([args, &result] { result = guarded([&] { return run_rate(*args, true); }); });
+  bw->callback([args, &result] { result = exit_code_of([&] { return run_rate(*args, true); }); });
 }
 
 }  // namespace chatsim::cli

@@ -45,27 +45,10 @@ std::optional<scene::TrackPoint> at_time(const scene::Scene& s, const scene::Obj
 // Fills the image area of the convex hull of world points, clipped at the camera's near plane
 // (a box beside the car reaches behind the camera: only what is in front shows).
 void fill_projected(cv::Mat& mask, const DeletionImage& im, const std::vector<Eigen::Vector3d>& pts, int pad) {
-  constexpr double kNear = 0.1;
-  std::vector<Eigen::Vector3d> cam;
-  for (const auto& w : pts) cam.push_back(im.pose.inverse() * w);
-  std::vector<Eigen::Vector3d> front;
-  for (const auto& c : cam)
-    if (c.z() >= kNear) front.push_back(c);
-  if (front.empty()) return;
-  if (front.size() < cam.size())
-    for (size_t a = 0; a < cam.size(); ++a)
-      for (size_t b = a + 1; b < cam.size(); ++b)
-        if ((cam[a].z() < kNear) != (cam[b].z() < kNear)) {
-          const double t = (kNear - cam[a].z()) / (cam[b].z() - cam[a].z());
-          front.push_back(cam[a] + t * (cam[b] - cam[a]));
-        }
+  const auto projected = scene::project_clipped(im.cam, im.pose, pts);
+  if (projected.empty()) return;
   std::vector<cv::Point2f> px;
-  for (const auto& c : front) {
-    // Far outside the image the hull is the same with clamped points; keeps integers sane.
-    const double u = std::clamp(im.cam.fx * c.x() / c.z() + im.cam.cx, -1e5, 1e5);
-    const double v = std::clamp(im.cam.fy * c.y() / c.z() + im.cam.cy, -1e5, 1e5);
-    px.emplace_back(float(u), float(v));
-  }
+  for (const auto& p : projected) px.emplace_back(float(p.x()), float(p.y()));
   std::vector<cv::Point2f> hull_f;
   cv::convexHull(px, hull_f);
   std::vector<cv::Point> hull;
