@@ -38,17 +38,21 @@ int run_estimate(const EstimateArgs& a) {
 
 struct EvalLightArgs {
   std::vector<std::string> hdri;
-  int headings = 8, width = 480;
-  std::string out;
+  int headings = 8, width = 480, every = 5;
+  std::string out, save_views, scene;
 };
 
 int run_eval_light(const EvalLightArgs& a) {
+  if (a.hdri.empty() && a.scene.empty()) {
+    std::cerr << "error: nothing to evaluate: give --hdri FILE (an HDR panorama) and/or --scene DIR (a demo scene)\n";
+    return exit_code::kUsage;
+  }
   nlohmann::json all = nlohmann::json::array();
   std::vector<double> angles, logs;
   for (const auto& file : a.hdri) {
     try {
       const auto pano = render::EnvMap::read(file);
-      auto r = render::light::evaluate_on_panorama(pano, fs::path(file).filename().string(), a.headings, a.width);
+      auto r = render::light::evaluate_on_panorama(pano, fs::path(file).filename().string(), a.headings, a.width, a.save_views);
       std::cerr << r["panorama"].get<std::string>() << ": median peak error " << r["median_angular_error_deg"].get<double>()
                 << " deg, median log10 intensity error " << r["median_log10_intensity_error"].get<double>() << "\n";
       for (const auto& h : r["headings"]) {
@@ -66,10 +70,19 @@ int run_eval_light(const EvalLightArgs& a) {
     std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
     return v[v.size() / 2];
   };
-  const nlohmann::json report{{"panoramas", all},
-                              {"median_angular_error_deg", median(angles)},
-                              {"median_log10_intensity_error", median(logs)},
-                              {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
+  nlohmann::json report{{"panoramas", all},
+                        {"median_angular_error_deg", median(angles)},
+                        {"median_log10_intensity_error", median(logs)},
+                        {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
+  if (!a.scene.empty()) {
+    const int rc = exit_code_of([&] {
+      const auto s = scene::load_scene(a.scene);
+      report["scene"] = render::light::evaluate_on_scene(s, a.every, [](const std::string& line) { std::cerr << line << std::endl; });
+      std::cerr << s.name << ": median sun error " << report["scene"]["median_angular_error_deg"].get<double>() << " deg\n";
+      return exit_code::kOk;
+    });
+    if (rc != exit_code::kOk) return rc;
+  }
   if (!a.out.empty()) {
     if (fs::path(a.out).has_parent_path()) fs::create_directories(fs::path(a.out).parent_path());
     std::ofstream(a.out) << report.dump(1) << "\n";
@@ -94,13 +107,17 @@ void add_light_command(CLI::App& app, int& result) {
 
 void add_eval_light_command(CLI::App& eval, int& result) {
   auto a = std::make_shared<EvalLightArgs>();
-  auto* cmd = eval.add_subcommand("light", "Lighting estimation on HDR panoramas: the car's three front cameras see LDR "
-                                           "crops at several headings; peak angular error (deg) and log10 peak "
-                                           "intensity error against the panorama's own peak");
-  cmd->add_option("--hdri", a->hdri, "equirect panoramas (.exr or .hdr), z up")->required()->check(CLI::ExistingFile);
+  auto* cmd = eval.add_subcommand("light", "Lighting estimation on HDR panoramas (the car's three front cameras see LDR "
+                                           "crops at several headings) and/or a demo scene with its ground-truth sky; "
+                                           "peak angular error (deg) and log10 peak intensity error");
+  cmd->add_option("--hdri", a->hdri, "equirect panoramas (.exr or .hdr), z up")->check(CLI::ExistingFile);
+  cmd->add_option("--scene", a->scene, "a scene with a ground-truth sky (a generated demo scene): estimated from its own "
+                                       "cameras and vehicles' shadows, against ground_truth/sky.json");
+  cmd->add_option("--every", a->every, "with --scene: every N-th frame")->check(CLI::Range(1, 10000));
   cmd->add_option("--headings", a->headings, "headings per panorama")->check(CLI::Range(1, 64));
   cmd->add_option("--width", a->width, "crop width in pixels")->check(CLI::Range(64, 4096));
   cmd->add_option("--out", a->out, "also write the JSON report here");
+  cmd->add_option("--save-views", a->save_views, "write the LDR crops the estimator saw to this directory");
   cmd->callback([a, &result] { result = run_eval_light(*a); });
 }
 

@@ -11,6 +11,7 @@
 #include "bench/chart.hpp"
 #include "bench/foreground_bench.hpp"
 #include "common/util/exit_codes.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
@@ -57,8 +58,8 @@ int run_foreground(const ForegroundArgs& a) {
 
 struct LightArgs {
   std::vector<std::string> hdri;
-  std::string out = "bench/results/light.json";
-  int headings = 8, width = 320;
+  std::string out = "bench/results/light.json", save_views, scene;
+  int headings = 8, width = 320, every = 5;
 };
 
 int run_light(const LightArgs& a) {
@@ -67,7 +68,7 @@ int run_light(const LightArgs& a) {
   std::vector<double> angles, logs;
   for (const auto& f : a.hdri) {
     const auto pano = render::EnvMap::read(f);
-    const json r = render::light::evaluate_on_panorama(pano, fs::path(f).filename().string(), a.headings, a.width);
+    const json r = render::light::evaluate_on_panorama(pano, fs::path(f).filename().string(), a.headings, a.width, a.save_views);
     all.push_back(r);
     pts.push_back({r["panorama"], r["median_seconds"], r["median_angular_error_deg"]});
     for (const auto& h : r["headings"]) angles.push_back(h["peak_angular_error_deg"]), logs.push_back(h["log10_intensity_error"]);
@@ -87,15 +88,24 @@ int run_light(const LightArgs& a) {
       const Eigen::Vector3f peak(r["peak_direction"][0].get<float>(), r["peak_direction"][1].get<float>(), r["peak_direction"][2].get<float>());
       base.push_back(std::acos(std::clamp(double(guess.dot(peak)), -1.0, 1.0)) * 180 / M_PI);
     }
-  const json report{{"panoramas", all},
-                    {"median_angular_error_deg", median(angles)},
-                    {"median_log10_intensity_error", median(logs)},
-                    {"baseline_fixed_guess_median_angular_error_deg", median(base)},
-                    {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
+  json report{{"panoramas", all},
+              {"median_angular_error_deg", median(angles)},
+              {"median_log10_intensity_error", median(logs)},
+              {"baseline_fixed_guess_median_angular_error_deg", median(base)},
+              {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
+  if (!a.scene.empty()) {
+    // A scene with vehicles and their shadows, which the panoramas do not have.
+    const auto s = scene::load_scene(a.scene);
+    const json r = render::light::evaluate_on_scene(s, a.every, [](const std::string& line) { std::cerr << "light: " << line << std::endl; });
+    report["scene"] = r;
+    pts.push_back({s.name + " (scene)", r["median_seconds"], r["median_angular_error_deg"]});
+    std::printf("%-16s median sun error %6.1f deg, log10 intensity error %.2f (its own cameras and shadows)\n", s.name.c_str(),
+                r["median_angular_error_deg"].get<double>(), r["median_log10_intensity_error"].get<double>());
+  }
   write_report(a.out, report);
   fs::path png(a.out);
   png.replace_extension(".png");
-  bench::write_scatter_png(png, {"Lighting estimation: median peak direction error per panorama", "seconds per estimate",
+  bench::write_scatter_png(png, {"Lighting estimation: median sun direction error per panorama (and scene, against its truth)", "seconds per estimate",
                                  "median peak error [deg] (lower is better)", true},
                            pts);
   std::printf("all: median peak error %.1f deg (fixed-guess baseline %.1f deg), median log10 intensity error %.2f\n",
@@ -248,7 +258,10 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   light->add_option("--out", la->out, "JSON report (a PNG chart beside it)");
   light->add_option("--headings", la->headings, "headings per panorama");
   light->add_option("--width", la->width, "crop width");
-  light->callback([la, &result] { result = run_light(*la); });
+  light->add_option("--save-views", la->save_views, "write the LDR crops the estimator saw to this directory");
+  light->add_option("--scene", la->scene, "also a demo scene, against its ground-truth sky (ground_truth/sky.json)");
+  light->add_option("--every", la->every, "with --scene: every N-th frame")->check(CLI::Range(1, 10000));
+  light->callback([la, &result] { result = exit_code_of([&] { return run_light(*la); }); });
   auto da = std::make_shared<DeletionArgs>();
   auto* del = bench.add_subcommand("deletion", "Deletion against the demo scene's clean plates, against cv::inpaint Telea");
   del->add_option("--scene", da->scene, "a rendered demo scene")->required();

@@ -38,88 +38,133 @@ Eigen::Vector3f from_angles(double az, double el) {
   return Eigen::Vector3f(float(std::cos(el) * std::cos(az)), float(std::cos(el) * std::sin(az)), float(std::sin(el)));
 }
 
-// Log-luminance error of a sky model against the samples, with the best scale.
+// Log-luminance error of a sky model against the samples, with the best scale. A clipped sample
+// only says the sky is at least that bright there (censored): it costs only where the model
+// falls below it. Without that, an overexposed sky keeps just its darkest pixels, those far from
+// the sun, and the fit turns the sun away.
 struct Fit {
   double error = 1e30, log_scale = 0;
 };
 Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(const Eigen::Vector3f&)>& model) {
-  double sum = 0;
-  int n = 0;
-  std::vector<double> resid;
-  resid.reserve(samples.size());
+  std::vector<double> exact, at_least;
+  exact.reserve(samples.size());
   for (const auto& s : samples) {
-    if (s.clipped) continue;
     const double r = std::log(std::max(luminance(s.radiance), 1e-9f)) - std::log(std::max(model(s.dir), 1e-9f));
-    resid.push_back(r);
-    sum += r;
-    ++n;
+    (s.clipped ? at_least : exact).push_back(r);
   }
   Fit f;
-  if (n == 0) return f;
-  f.log_scale = sum / n;
+  if (exact.empty()) return f;
+  // The scale minimising the sum of squares (exact) plus the squared shortfalls (clipped): a
+  // convex 1-D problem; the fixed point of "mean over the exact and the short" is its minimum.
+  double b = 0;
+  for (double r : exact) b += r;
+  b /= double(exact.size());
+  for (int it = 0; it < 30; ++it) {
+    double sum = 0;
+    size_t n = exact.size();
+    for (double r : exact) sum += r;
+    for (double r : at_least)
+      if (r > b) sum += r, ++n;
+    const double next = sum / double(n);
+    if (std::abs(next - b) < 1e-6) break;
+    b = next;
+  }
+  f.log_scale = b;
   double e = 0;
-  for (double r : resid) e += (r - f.log_scale) * (r - f.log_scale);
-  f.error = e / n;
+  for (double r : exact) e += (r - b) * (r - b);
+  for (double r : at_least)
+    if (r > b) e += (r - b) * (r - b);
+  f.error = e / double(exact.size() + at_least.size());
   return f;
 }
 
 // How much darker the ground is where boxes would cast their shadows for a sun direction.
 struct ShadowCue {
-  double score = 0;     // mean log(lit / shadow) over the boxes that could be measured
+  double score = 0;     // mean log(lit / shadow) over the boxes that could be measured (capped)
+  double evidence = 0;  // their sum
   double ratio = 1;     // median lit / shadow
   int boxes = 0;
 };
 
-// The ground region a box's shadow covers for a sun direction (beyond the box's own footprint),
-// as image polygons; false when the box is behind or too far from the camera.
-bool shadow_region(const LightView& v, const GroundBox& b, const Eigen::Vector3d& sun, cv::Mat& shadow, cv::Mat& blocked) {
+// The ground region a box's shadow covers for a sun direction, and the box itself, as convex
+// image polygons; false when the box is far from the camera or out of view.
+struct ShadowPolygons {
+  std::vector<cv::Point> shadow, body;
+};
+bool shadow_region(const LightView& v, const GroundBox& b, const Eigen::Vector3d& sun, ShadowPolygons& out) {
+  if ((b.center - v.camera_to_world.translation()).norm() > 30) return false;
   const double ground = b.center.z() - b.size_lwh.z() / 2;
   const auto corners = scene::box_corners(b.center, b.size_lwh, b.yaw);
-  std::vector<cv::Point> sh, body;
+  std::vector<Eigen::Vector3d> on_ground, body(corners.begin(), corners.end());
   for (const auto& c : corners) {
-    const double h = c.z() - ground;
-    for (const Eigen::Vector3d& p : {Eigen::Vector3d(c - sun * (h / sun.z())), Eigen::Vector3d(c.x(), c.y(), ground)}) {
-      const auto pr = scene::project(v.camera, v.camera_to_world, Eigen::Vector3d(p.x(), p.y(), ground), 0.5);
-      if (!pr || pr->depth > 30) return false;
-      sh.emplace_back(int(std::lround(pr->pixel.x())), int(std::lround(pr->pixel.y())));
-    }
-    const auto pr = scene::project(v.camera, v.camera_to_world, c, 0.5);
-    if (!pr) return false;
-    body.emplace_back(int(std::lround(pr->pixel.x())), int(std::lround(pr->pixel.y())));
+    const Eigen::Vector3d tip = c - sun * ((c.z() - ground) / sun.z());
+    on_ground.emplace_back(tip.x(), tip.y(), ground);
+    on_ground.emplace_back(c.x(), c.y(), ground);
   }
-  std::vector<cv::Point> hull_sh, hull_body;
-  cv::convexHull(sh, hull_sh);
-  cv::convexHull(body, hull_body);
-  if ((cv::boundingRect(hull_sh) & cv::Rect(0, 0, v.camera.width, v.camera.height)).area() < 50) return false;
-  shadow = cv::Mat(v.camera.height, v.camera.width, CV_8U, cv::Scalar(0));
-  blocked = shadow.clone();
-  cv::fillConvexPoly(shadow, hull_sh, 255);
-  cv::fillConvexPoly(blocked, hull_body, 255);
-  cv::dilate(blocked, blocked, cv::Mat(), cv::Point(-1, -1), 2);
-  return true;
+  // Clipped at the near plane: the nearest vehicles, reaching past the image, cast the largest
+  // visible shadows.
+  auto pixels = [&](const std::vector<Eigen::Vector3d>& world) {
+    std::vector<cv::Point> px, hull;
+    for (const auto& p : scene::project_clipped(v.camera, v.camera_to_world, world, 0.5))
+      px.emplace_back(int(std::lround(p.x())), int(std::lround(p.y())));
+    if (px.size() >= 3) cv::convexHull(px, hull);
+    return hull;
+  };
+  out.shadow = pixels(on_ground);
+  out.body = pixels(body);
+  if (out.shadow.size() < 3 || out.body.size() < 3) return false;
+  return (cv::boundingRect(out.shadow) & cv::Rect(0, 0, v.camera.width, v.camera.height)).area() >= 50;
+}
+
+// Rasterises polygons into a mask covering only `roi` of the image.
+cv::Mat roi_mask(const cv::Rect& roi, const std::vector<cv::Point>& polygon) {
+  cv::Mat m(roi.size(), CV_8U, cv::Scalar(0));
+  if (!polygon.empty()) cv::fillPoly(m, std::vector<std::vector<cv::Point>>{polygon}, 255, cv::LINE_8, 0, -roi.tl());
+  return m;
 }
 
 // How much darker the ground is where boxes would cast their shadows for a sun direction than
 // where they would for the mirrored sun (same distance from the box, other side): the light
-// the box itself hides from the sky cancels out, the sun's shadow does not.
+// the box itself hides from the sky cancels out, the sun's shadow does not. Where the mirrored
+// region is out of view (a vehicle beside the camera), the ground just around the shadow.
+// Masks cover only the boxes' surroundings: this runs for thousands of candidate suns.
 ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::Mat>& gray, const std::vector<GroundBox>& boxes,
                      const Eigen::Vector3d& sun) {
   ShadowCue cue;
   if (sun.z() < 0.08) return cue;
+  constexpr int kRing = 15;  // pixels of ground around the shadow, when the mirror is out of view
   const Eigen::Vector3d mirror(-sun.x(), -sun.y(), sun.z());
   std::vector<double> logs, ratios;
   for (const auto& b : boxes)
     for (size_t vi = 0; vi < views.size(); ++vi) {
-      cv::Mat shadow, blocked, lit, blocked2;
-      if (!shadow_region(views[vi], b, sun, shadow, blocked) || !shadow_region(views[vi], b, mirror, lit, blocked2)) continue;
-      cv::Mat overlap = shadow & lit;
-      shadow.setTo(0, blocked | overlap);
-      lit.setTo(0, blocked | overlap);
+      const cv::Rect image(0, 0, views[vi].camera.width, views[vi].camera.height);
+      ShadowPolygons sp, mp;
+      if (!shadow_region(views[vi], b, sun, sp)) continue;
+      const bool mirrored = shadow_region(views[vi], b, mirror, mp);
+      cv::Rect box = cv::boundingRect(sp.shadow) | cv::boundingRect(sp.body);
+      if (mirrored) box |= cv::boundingRect(mp.shadow);
+      box.x -= kRing, box.y -= kRing, box.width += 2 * kRing, box.height += 2 * kRing;
+      const cv::Rect roi = box & image;
+      if (roi.area() == 0) continue;
+      cv::Mat shadow = roi_mask(roi, sp.shadow), blocked = roi_mask(roi, sp.body), lit;
+      cv::dilate(blocked, blocked, cv::Mat(), cv::Point(-1, -1), 2);
+      if (mirrored) {
+        lit = roi_mask(roi, mp.shadow);
+        const cv::Mat overlap = shadow & lit;
+        shadow.setTo(0, blocked | overlap);
+        lit.setTo(0, blocked | overlap);
+      }
+      if (!mirrored || cv::countNonZero(lit) < 30) {
+        cv::dilate(shadow, lit, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kRing + 1, 2 * kRing + 1)));
+        shadow.setTo(0, blocked);
+        lit.setTo(0, blocked | shadow);
+      }
       std::vector<float> in, out;
+      const cv::Mat g = gray[vi](roi);
       for (int y = 0; y < shadow.rows; ++y)
         for (int x = 0; x < shadow.cols; ++x) {
-          if (shadow.at<uchar>(y, x)) in.push_back(gray[vi].at<float>(y, x));
-          else if (lit.at<uchar>(y, x)) out.push_back(gray[vi].at<float>(y, x));
+          if (shadow.at<uchar>(y, x)) in.push_back(g.at<float>(y, x));
+          else if (lit.at<uchar>(y, x)) out.push_back(g.at<float>(y, x));
         }
       if (in.size() < 30 || out.size() < 30) continue;
       std::nth_element(in.begin(), in.begin() + long(in.size() / 2), in.end());
@@ -130,8 +175,11 @@ ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::
     }
   if (logs.empty()) return cue;
   cue.boxes = int(logs.size());
-  for (double l : logs) cue.score += l;
-  cue.score /= double(logs.size());
+  // Each measured vehicle adds its evidence, capped at a ratio of 4 (a real car shadow under a
+  // clear sky is 2-4 times darker): a sun direction that explains the shadows of many vehicles
+  // beats one whose shadow lands on a single dark patch, as a mean would not.
+  for (double l : logs) cue.evidence += std::min(l, std::log(4.0));
+  cue.score = cue.evidence / double(logs.size());
   std::nth_element(ratios.begin(), ratios.begin() + long(ratios.size() / 2), ratios.end());
   cue.ratio = ratios[ratios.size() / 2];
   return cue;
@@ -275,18 +323,24 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
       sun_visible_area = score;
       sun_visible = pixel_dir(v, cx, cy).cast<double>();
     }
-    // Sky samples (a random subset).
-    std::vector<cv::Point> sky_px;
+    // Sky samples: random subsets of the measured and of the clipped pixels, each capped on its
+    // own, so an overexposed sky does not crowd out the few pixels that say how bright it is.
+    std::vector<cv::Point> measured, clipped_px;
     for (int y = 0; y < mask.rows; ++y)
       for (int x = 0; x < mask.cols; ++x)
-        if (mask.at<uchar>(y, x)) sky_px.emplace_back(x, y);
-    std::shuffle(sky_px.begin(), sky_px.end(), rng);
-    if (sky_px.size() > 1500) sky_px.resize(1500);
-    for (const auto& p : sky_px) {
-      const cv::Vec3b c = v.rgb.at<cv::Vec3b>(p);
-      SkySample s{pixel_dir(v, p.x, p.y), linear_pixel(v, c), c[0] >= kClipped || c[1] >= kClipped || c[2] >= kClipped};
-      samples.push_back(s);
-      if (!s.clipped && s.radiance.x() > 0) blue += s.radiance.z() / s.radiance.x(), ++blue_n;
+        if (mask.at<uchar>(y, x)) {
+          const cv::Vec3b c = v.rgb.at<cv::Vec3b>(y, x);
+          (c[0] >= kClipped || c[1] >= kClipped || c[2] >= kClipped ? clipped_px : measured).emplace_back(x, y);
+        }
+    for (auto* set : {&measured, &clipped_px}) {
+      std::shuffle(set->begin(), set->end(), rng);
+      if (set->size() > 1000) set->resize(1000);
+      for (const auto& p : *set) {
+        const cv::Vec3b c = v.rgb.at<cv::Vec3b>(p);
+        SkySample s{pixel_dir(v, p.x, p.y), linear_pixel(v, c), set == &clipped_px};
+        samples.push_back(s);
+        if (!s.clipped && s.radiance.x() > 0) blue += s.radiance.z() / s.radiance.x(), ++blue_n;
+      }
     }
     est.sky_pixels += cv::countNonZero(mask);
   }
@@ -299,44 +353,55 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
     Fit fit;
     ShadowCue cue;
   };
-  auto evaluate = [&](double az, double el, double T) {
-    SkyParams p;
-    p.sun_direction = from_angles(az, el);
-    p.turbidity = float(T);
-    p.compute_ground = false;
-    const Sky sky(p);
-    Candidate c{az, el, T, 0, fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }), {}};
-    if (!boxes.empty()) c.cue = shadow_cue(views, gray, boxes, p.sun_direction.cast<double>());
-    c.cost = (samples.empty() ? 0.0 : c.fit.error) - 0.5 * c.cue.score;
-    return c;
+  // The best turbidity for one sun direction; the shadow cue does not depend on turbidity, so
+  // it is measured once per direction.
+  auto evaluate = [&](double az, double el, const std::vector<double>& turbidities) {
+    Candidate best_t{az, el, 3, 1e30, {}, {}};
+    ShadowCue cue;
+    if (!boxes.empty()) cue = shadow_cue(views, gray, boxes, from_angles(az, el).cast<double>());
+    for (double T : turbidities) {
+      if (T < 1.8) continue;
+      SkyParams p;
+      p.sun_direction = from_angles(az, el);
+      p.turbidity = float(T);
+      p.compute_ground = false;
+      const Sky sky(p);
+      Candidate c{az, el, T, 0, fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }), cue};
+      c.cost = (samples.empty() ? 0.0 : c.fit.error) - 0.15 * cue.evidence;
+      if (c.cost < best_t.cost) best_t = c;
+    }
+    return best_t;
   };
+  // The sky fit over all directions, refined around its best.
   Candidate best{0, 0, 3, 1e30, {}, {}};
-  const bool visible = sun_visible_area > 0 && sun_visible.z() > 0.02;
-  if (visible) {
-    const double az = std::atan2(sun_visible.y(), sun_visible.x()), el = std::asin(std::clamp(sun_visible.z(), -1.0, 1.0));
-    for (double T : {2.0, 2.5, 3.0, 4.0, 5.0, 7.0}) {
-      const Candidate c = evaluate(az, el, T);
+  for (int ai = 0; ai < 72; ++ai)
+    for (int ei = 1; ei <= 17; ++ei) {
+      const Candidate c = evaluate(ai * 5 * M_PI / 180, ei * 5 * M_PI / 180, {2.5, 4.0, 6.0});
       if (c.cost < best.cost) best = c;
     }
-    est.sun_cue = "visible";
-  } else {
-    for (int ai = 0; ai < 72; ++ai)
-      for (int ei = 1; ei <= 17; ++ei)
-        for (double T : {2.5, 4.0, 6.0}) {
-          const Candidate c = evaluate(ai * 5 * M_PI / 180, ei * 5 * M_PI / 180, T);
-          if (c.cost < best.cost) best = c;
-        }
-    // Refine around the best.
-    const Candidate coarse = best;
-    for (int da = -4; da <= 4; ++da)
-      for (int de = -4; de <= 4; ++de)
-        for (double T : {coarse.turbidity - 0.5, coarse.turbidity, coarse.turbidity + 1.0}) {
-          const double el = coarse.el + de * M_PI / 180;
-          if (el < 2 * M_PI / 180 || el > 89 * M_PI / 180 || T < 1.8) continue;
-          const Candidate c = evaluate(coarse.az + da * M_PI / 180, el, T);
-          if (c.cost < best.cost) best = c;
-        }
-    est.sun_cue = best.cue.boxes > 0 && best.cue.score > 0.15 ? "shadows" : "sky_gradient";
+  const Candidate coarse = best;
+  for (int da = -4; da <= 4; ++da)
+    for (int de = -4; de <= 4; ++de) {
+      const double el = coarse.el + de * M_PI / 180;
+      if (el < 2 * M_PI / 180 || el > 89 * M_PI / 180) continue;
+      const Candidate c =
+          evaluate(coarse.az + da * M_PI / 180, el, {coarse.turbidity - 0.5, coarse.turbidity, coarse.turbidity + 1.0});
+      if (c.cost < best.cost) best = c;
+    }
+  est.sun_cue = best.cue.boxes > 0 && best.cue.score > 0.15 ? "shadows" : "sky_gradient";
+  // A sun-like blob is the sun only where the sky agrees: it fits at least as well as the best
+  // direction, or lies near it (then the blob is the more precise). An overexposed patch of sky
+  // between roofs or a white window looks like a blob too, and the sky around it says otherwise.
+  bool visible = false;
+  if (sun_visible_area > 0 && sun_visible.z() > 0.02) {
+    const double az = std::atan2(sun_visible.y(), sun_visible.x()), el = std::asin(std::clamp(sun_visible.z(), -1.0, 1.0));
+    const Candidate seen = evaluate(az, el, {2.0, 2.5, 3.0, 4.0, 5.0, 7.0});
+    const double apart = std::acos(std::clamp(double(from_angles(best.az, best.el).dot(from_angles(az, el))), -1.0, 1.0));
+    if (seen.cost <= best.cost || apart < 10 * M_PI / 180) {
+      best = seen;
+      visible = true;
+      est.sun_cue = "visible";
+    }
   }
   // Sunny or overcast: a blue sky, a visible sun or real shadows say sunny.
   // A clear sky model that explains the sky clearly better than an overcast one says sunny too

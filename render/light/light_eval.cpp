@@ -3,11 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
 
 #include <opencv2/imgproc.hpp>
 
 #include "render/color.hpp"
 #include "render/equirect.hpp"
+#include "render/image_io.hpp"
 #include "render/light/light_estimate.hpp"
 #include "render/sampling.hpp"
 
@@ -15,6 +20,11 @@ namespace chatsim::render::light {
 namespace {
 
 constexpr double kCapDeg = 5, kRingDeg = 10;
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
 
 double cap_excess(const std::function<float(const Eigen::Vector3f&)>& lum, const Eigen::Vector3f& peak) {
   // Numerical integral over the 10-degree disc around the peak on a polar grid.
@@ -56,7 +66,7 @@ PanoramaPeak panorama_peak(const EnvMap& pano) {
   return p;
 }
 
-nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name, int headings, int width) {
+nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name, int headings, int width, const std::string& save_dir) {
   const PanoramaPeak truth = panorama_peak(pano);
   nlohmann::json results = nlohmann::json::array();
   std::vector<double> angles, logs, seconds;
@@ -103,6 +113,15 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
       views[k].rgb = rgb;
       views[k].exposure = exposure;
     }
+    if (!save_dir.empty()) {
+      // Left, front, right side by side, as the driver would see them.
+      cv::Mat strip;
+      cv::hconcat(std::vector<cv::Mat>{views[1].rgb, views[0].rgb, views[2].rgb}, strip);
+      std::filesystem::create_directories(save_dir);
+      char file[32];
+      std::snprintf(file, sizeof file, "-%03d.png", int(std::lround(heading * 180 / M_PI)));
+      write_rgb8(std::filesystem::path(save_dir) / (std::filesystem::path(name).stem().string() + file), strip);
+    }
     const auto t0 = std::chrono::steady_clock::now();
     const LightEstimate est = estimate_light(views);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -124,10 +143,6 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
                        {"sun_cue", est.sun_cue}, {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
                        {"seconds", secs}});
   }
-  auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
   return {{"panorama", name},
           {"peak_direction", {truth.direction.x(), truth.direction.y(), truth.direction.z()}},
           {"peak_elevation_deg", std::asin(std::clamp(double(truth.direction.z()), -1.0, 1.0)) * 180 / M_PI},
@@ -137,6 +152,52 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
           {"median_seconds", median(seconds)},
           {"estimated_sunny", sunny},
           {"headings", results}};
+}
+
+nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::function<void(const std::string&)>& progress) {
+  const auto truth_file = s.dir / "ground_truth" / "sky.json";
+  std::ifstream in(truth_file);
+  if (!in) throw std::invalid_argument(truth_file.string() + ": no ground-truth sky (only a generated demo scene has one: chatsim scene demo)");
+  nlohmann::json truth;
+  try {
+    truth = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(truth_file.string() + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!truth.contains("sun_direction_world") || !truth.contains("sun_radiance_rgb"))
+    throw std::invalid_argument(truth_file.string() + ": needs sun_direction_world and sun_radiance_rgb");
+  const auto& td = truth["sun_direction_world"];
+  const auto& tr = truth["sun_radiance_rgb"];
+  const Eigen::Vector3f sun = Eigen::Vector3f(td[0].get<float>(), td[1].get<float>(), td[2].get<float>()).normalized();
+  const double sun_lum = luminance(Rgb(tr[0].get<float>(), tr[1].get<float>(), tr[2].get<float>()));
+  nlohmann::json frames = nlohmann::json::array();
+  std::vector<double> angles, logs, seconds;
+  for (const auto& f : s.frames) {
+    if (f.index % std::max(1, every) != 0) continue;
+    const auto views = scene_light_views(s, f.index);
+    if (views.empty()) continue;
+    const auto t0 = std::chrono::steady_clock::now();
+    const LightEstimate est = estimate_light(views, scene_ground_boxes(s, f.index));
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double angle =
+        std::acos(std::clamp(double(est.sky.sun_direction.normalized().dot(sun)), -1.0, 1.0)) * 180 / M_PI;
+    const double log_err = std::abs(std::log10(std::max(double(luminance(est.sun_radiance)), 1e-12) / std::max(sun_lum, 1e-12)));
+    angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
+    frames.push_back({{"frame", f.index}, {"sky_type", est.sunny ? "sunny" : "overcast"}, {"sun_cue", est.sun_cue},
+                      {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err}, {"seconds", secs}});
+    if (progress) {
+      char line[160];
+      std::snprintf(line, sizeof line, "frame %d: sun %.1f deg off (%s), %.1f s", f.index, angle, est.sun_cue.c_str(), secs);
+      progress(line);
+    }
+  }
+  if (angles.empty()) throw std::invalid_argument(s.dir.string() + ": no frame with images to estimate from");
+  return {{"scene", s.name},
+          {"sun_direction", {sun.x(), sun.y(), sun.z()}},
+          {"median_angular_error_deg", median(angles)},
+          {"median_log10_intensity_error", median(logs)},
+          {"median_seconds", median(seconds)},
+          {"frames", frames}};
 }
 
 }  // namespace chatsim::render::light

@@ -4,10 +4,12 @@
 // exposure, clipping, sRGB OETF), the estimator sees only those, and its sun is compared with
 // the panorama's own peak: angular error, and the log10 error of the peak's intensity (the
 // irradiance of the 5-degree cap around the peak above its surroundings).
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "common/scene/scene.hpp"
 #include "render/env_map.hpp"
 
 namespace chatsim::render::light {
@@ -18,7 +20,16 @@ struct PanoramaPeak {
 };
 PanoramaPeak panorama_peak(const EnvMap& panorama);
 
-// One result per heading, and their medians.
-nlohmann::json evaluate_on_panorama(const EnvMap& panorama, const std::string& name, int headings = 8, int width = 480);
+// One result per heading, and their medians. With save_dir, the LDR crops the estimator saw are
+// written there (<name>-<heading>.png: left, front and right side by side) for a person to look at.
+nlohmann::json evaluate_on_panorama(const EnvMap& panorama, const std::string& name, int headings = 8, int width = 480,
+                                    const std::string& save_dir = "");
+
+// The estimate on a scene whose sky is known (the demo scene's ground_truth/sky.json), with the
+// scene's own cameras, vehicles and their shadows: the sun's angular error and log10 intensity
+// error on every `every`-th frame, and their medians. Throws naming the file when the scene has
+// no ground-truth sky.
+nlohmann::json evaluate_on_scene(const scene::Scene& scene, int every = 5,
+                                 const std::function<void(const std::string&)>& progress = nullptr);
 
 }  // namespace chatsim::render::light

@@ -62,7 +62,8 @@ TEST(Processes, CommandsGivenAMissingSceneExitWithUsageCodeNamingIt) {
       {"light", "estimate", "--scene", scene, "--out", (dir / "sky.exr").string()},
       {"render", "--model", (dir / "m.gs").string(), "--scene", scene, "--out", (dir / "out").string()},
       {"eval", "nvs", "--scene", scene, "--model", (dir / "m.gs").string()},
-      {"eval", "deletion", "--scene", scene}};
+      {"eval", "deletion", "--scene", scene},
+      {"eval", "light", "--scene", scene}};
   for (auto args : commands) {
     args.insert(args.begin(), bin("chatsim"));
     ScopedProcess proc(test_support::spawn(args, log));

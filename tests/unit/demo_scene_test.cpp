@@ -12,6 +12,7 @@
 #include "render/demo/demo_generate.hpp"
 #include "render/image_io.hpp"
 #include "render/inpaint/deletion_eval.hpp"
+#include "render/light/light_eval.hpp"
 
 namespace chatsim {
 namespace {
@@ -144,6 +145,29 @@ TEST_F(DemoScene, GroundTruthViewsAndSkyAreWritten) {
   EXPECT_GT(sky["sun_direction_world"][2].get<double>(), 0.5);
   const auto env = render::EnvMap::read(*dir_ / "ground_truth/sky.exr");
   EXPECT_EQ(env.width(), 512);
+}
+
+// The light evaluation reads that sky: one result per evaluated frame, each an angle; a scene
+// without it is refused with the file named. (At 96x64 the angles say nothing about accuracy:
+// bench light --scene measures that on the full demo scene.)
+TEST_F(DemoScene, LightEvaluationComparesWithTheGroundTruthSkyAndNamesItWhenMissing) {
+  const auto r = render::light::evaluate_on_scene(scene::load_scene(*dir_), 2);
+  ASSERT_EQ(r["frames"].size(), 2u) << r.dump(1);  // frames 0 and 2 of 4
+  for (const auto& f : r["frames"]) {
+    EXPECT_GE(f["peak_angular_error_deg"].get<double>(), 0.0);
+    EXPECT_LE(f["peak_angular_error_deg"].get<double>(), 180.0);
+  }
+  const fs::path copy = fs::temp_directory_path() / ("chatsim-light-eval-test-" + std::to_string(getpid()));
+  fs::remove_all(copy);
+  fs::copy(*dir_, copy, fs::copy_options::recursive);
+  fs::remove(copy / "ground_truth" / "sky.json");
+  try {
+    render::light::evaluate_on_scene(scene::load_scene(copy), 2);
+    ADD_FAILURE() << "a scene without ground_truth/sky.json was evaluated";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("ground_truth/sky.json"), std::string::npos) << e.what();
+  }
+  fs::remove_all(copy);
 }
 
 TEST(DemoSceneDeterminism, SameSeedSameImages) {
