@@ -125,14 +125,14 @@ cv::Mat roi_mask(const cv::Rect& roi, const std::vector<cv::Point>& polygon) {
 
 // How much darker the ground is where boxes would cast their shadows for a sun direction than
 // where they would for the mirrored sun (same distance from the box, other side): the light
-// the box itself hides from the sky cancels out, the sun's shadow does not. Where the mirrored
-// region is out of view (a vehicle beside the camera), the ground just around the shadow.
+// the box itself hides from the sky cancels out, the sun's shadow does not; and darker than the
+// ground just around it.
 // Masks cover only the boxes' surroundings: this runs for thousands of candidate suns.
 ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::Mat>& gray, const std::vector<GroundBox>& boxes,
                      const Eigen::Vector3d& sun) {
   ShadowCue cue;
   if (sun.z() < 0.08) return cue;
-  constexpr int kRing = 15;  // pixels of ground around the shadow, when the mirror is out of view
+  constexpr int kRing = 15;  // pixels of ground around the shadow
   const Eigen::Vector3d mirror(-sun.x(), -sun.y(), sun.z());
   std::vector<double> logs, ratios;
   for (const auto& b : boxes)
@@ -146,30 +146,36 @@ ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::
       box.x -= kRing, box.y -= kRing, box.width += 2 * kRing, box.height += 2 * kRing;
       const cv::Rect roi = box & image;
       if (roi.area() == 0) continue;
-      cv::Mat shadow = roi_mask(roi, sp.shadow), blocked = roi_mask(roi, sp.body), lit;
+      cv::Mat shadow = roi_mask(roi, sp.shadow), blocked = roi_mask(roi, sp.body), lit, ring;
       cv::dilate(blocked, blocked, cv::Mat(), cv::Point(-1, -1), 2);
       if (mirrored) {
         lit = roi_mask(roi, mp.shadow);
         const cv::Mat overlap = shadow & lit;
         shadow.setTo(0, blocked | overlap);
         lit.setTo(0, blocked | overlap);
-      }
-      if (!mirrored || cv::countNonZero(lit) < 30) {
-        cv::dilate(shadow, lit, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kRing + 1, 2 * kRing + 1)));
+      } else {
         shadow.setTo(0, blocked);
-        lit.setTo(0, blocked | shadow);
       }
-      std::vector<float> in, out;
+      cv::dilate(shadow, ring, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kRing + 1, 2 * kRing + 1)));  // a square: separable, fast
+      ring.setTo(0, blocked | shadow);
       const cv::Mat g = gray[vi](roi);
-      for (int y = 0; y < shadow.rows; ++y)
-        for (int x = 0; x < shadow.cols; ++x) {
-          if (shadow.at<uchar>(y, x)) in.push_back(g.at<float>(y, x));
-          else if (lit.at<uchar>(y, x)) out.push_back(g.at<float>(y, x));
-        }
-      if (in.size() < 30 || out.size() < 30) continue;
-      std::nth_element(in.begin(), in.begin() + long(in.size() / 2), in.end());
-      std::nth_element(out.begin(), out.begin() + long(out.size() / 2), out.end());
-      const double r = (out[out.size() / 2] + 1e-4) / (in[in.size() / 2] + 1e-4);
+      auto median_of = [&](const cv::Mat& mask) {
+        std::vector<float> v;
+        for (int y = 0; y < mask.rows; ++y)
+          for (int x = 0; x < mask.cols; ++x)
+            if (mask.at<uchar>(y, x)) v.push_back(g.at<float>(y, x));
+        if (v.size() < 30) return -1.0f;
+        std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+        return v[v.size() / 2];
+      };
+      const float in = median_of(shadow), around = median_of(ring), other_side = mirrored ? median_of(lit) : -1.0f;
+      if (in < 0 || around < 0) continue;
+      // A shadow is darker than the ground just around it (it has edges: a direction whose
+      // shadow covers only a sliver of a real one is not) and, where that side is in view,
+      // than the ground on the other side of the vehicle (the light the vehicle hides from the
+      // sky cancels out).
+      double r = (around + 1e-4) / (in + 1e-4);
+      if (other_side >= 0) r = std::min(r, (other_side + 1e-4) / (in + 1e-4));
       logs.push_back(std::log(std::max(r, 1e-3)));
       ratios.push_back(r);
     }
