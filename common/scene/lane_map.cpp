@@ -19,6 +19,10 @@ LaneMap::LaneMap(std::vector<Lane> lanes) : lanes_(std::move(lanes)) {
     lane.s.assign(lane.centerline.size(), 0.0);
     for (size_t i = 1; i < lane.centerline.size(); ++i)
       lane.s[i] = lane.s[i - 1] + (xy(lane.centerline[i]) - xy(lane.centerline[i - 1])).norm();
+    Eigen::AlignedBox2d box;
+    for (const auto& c : lane.centerline) box.extend(xy(c));
+    if (!box.isEmpty()) box.min().array() -= lane.width / 2, box.max().array() += lane.width / 2;
+    bounds_.push_back(box);
   }
 }
 
@@ -65,6 +69,8 @@ std::vector<LanePosition> LaneMap::containing(const Eigen::Vector2d& p, double m
   std::vector<LanePosition> out;
   for (size_t i = 0; i < lanes_.size(); ++i) {
     if (lanes_[i].centerline.size() < 2) continue;
+    // Far from the lane's extent: not on it (the planner asks this for every pose it tries).
+    if (bounds_[i].exteriorDistance(p) > margin) continue;
     const auto pos = project(int(i), p);
     const bool inside_extent = pos.s > 1e-6 && pos.s < lanes_[i].length() - 1e-6;
     if (inside_extent && std::abs(pos.lateral) <= lanes_[i].width / 2 + margin) out.push_back(pos);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace chatsim::scene {
 
@@ -62,6 +63,7 @@ class LaneMap {
 
  private:
   std::vector<Lane> lanes_;
+  std::vector<Eigen::AlignedBox2d> bounds_;  // each lane's centreline extent grown by half its width
 };
 
 }  // namespace chatsim::scene
