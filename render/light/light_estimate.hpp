@@ -1,10 +1,10 @@
 #pragma once
 // Lighting estimation from a car's LDR camera images: an HDR sky dome with a sun, in the scene's
 // radiance units. Sky pixels (bright, smooth, above the horizon, reached from the top of the
-// image) are fitted by a Preetham clear sky or a CIE overcast sky; the sun's direction comes
-// from a visible sun, else from the shadows that labelled boxes cast on the ground, else from
-// the sky's brightness pattern; its intensity from the lit-to-shadow contrast on the ground,
-// else from the fitted sky's own model.
+// image, clipped ones as lower bounds) are fitted by a Preetham clear sky or a CIE overcast
+// sky; the sun's direction is searched, scoring that fit together with the shadows labelled
+// boxes would cast on the ground, and a visible sun blob is taken where the fit agrees with it;
+// its intensity from the lit-to-shadow contrast on the ground, else from the fitted sky.
 #include <optional>
 #include <string>
 #include <vector>
