@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 namespace r = chatsim::render;
 
-r::light::LightEstimate scene_light(const scene::Scene& s) {
+r::light::LightEstimate scene_light(const scene::Scene& s, bool* estimated) {
+  if (estimated != nullptr) *estimated = false;
   static std::mutex mu;
   std::lock_guard lock(mu);
   const fs::path dir = scene_cache_dir(s);
@@ -47,6 +48,7 @@ r::light::LightEstimate scene_light(const scene::Scene& s) {
   }
   const int frame = s.frames.empty() ? 0 : s.frames[s.frames.size() / 2].index;
   est = r::light::estimate_light(r::light::scene_light_views(s, frame), r::light::scene_ground_boxes(s, frame));
+  if (estimated != nullptr) *estimated = true;
   fs::create_directories(dir);
   est.dome().write_exr(dir / "sky.exr");
   json j = est.to_json("sky.exr");
@@ -208,6 +210,19 @@ r::AssetModel vehicle_model(const json& v) {
 }
 
 }  // namespace
+
+AgentOutcome foreground_light(const AgentCall& call) {
+  try {
+    const auto s = cached_scene(call.scene);
+    bool estimated = false;
+    const auto light = scene_light(*s, &estimated);
+    json j = light.to_json("sky.exr");
+    j["estimated"] = estimated;
+    return AgentOutcome::success(j);
+  } catch (const scene::SceneError& e) {
+    return AgentOutcome::failure(ErrorKind::BadRequest, std::string("bad scene: ") + e.what());
+  }
+}
 
 AgentOutcome foreground_render(const AgentCall& call) {
   try {

@@ -22,8 +22,14 @@ struct ForegroundSettings {
 // action "render" (args: a RenderJob with added, in and out; optional spp).
 AgentOutcome foreground_render(const AgentCall& call);
 
-// The scene's lighting estimate, cached beside its model (light.json, sky.exr).
-chatsim::render::light::LightEstimate scene_light(const scene::Scene& scene);
+// action "light": the scene's lighting estimate, made once before the rendering stages so that
+// the workers of the foreground and deletion stages read it rather than each making their own.
+// Answers the estimate's JSON and "estimated" (false: it was cached).
+AgentOutcome foreground_light(const AgentCall& call);
+
+// The scene's lighting estimate, cached beside its model (light.json, sky.exr); `estimated`
+// tells whether this call made it.
+chatsim::render::light::LightEstimate scene_light(const scene::Scene& scene, bool* estimated = nullptr);
 
 // An added vehicle's pose (world: bottom centre on the ground, yaw) at a scene time, from its
 // trajectory; none when the trajectory has ended (it left the scene).

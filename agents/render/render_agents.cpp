@@ -52,7 +52,8 @@ class ForegroundAgent : public Agent {
   }
   AgentOutcome handle(const AgentCall& call) override {
     if (call.action == "render") return foreground_render(call);
-    return AgentOutcome::failure(ErrorKind::BadRequest, "foreground has no action '" + call.action + "' (actions: render)");
+    if (call.action == "light") return foreground_light(call);
+    return AgentOutcome::failure(ErrorKind::BadRequest, "foreground has no action '" + call.action + "' (actions: render, light)");
   }
 };
 

@@ -119,6 +119,20 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
       timings["training"] = seconds_since(t0);
       reuse["training"] = !m.result.value("trained", false);
     }
+    // The scene's light, for deletion's shadows and the added vehicles: estimated once here (and
+    // cached), not by every worker of those stages at once. An agent that cannot (a mock) leaves
+    // it to the stages.
+    if (!removed.empty() || !added.empty()) {
+      const auto t0 = std::chrono::steady_clock::now();
+      if (progress) progress("light", 0, "light: the scene's sky and sun (estimated on first use, then cached)");
+      const AgentOutcome l = call("foreground", AgentCall{"light", task.scene_dir, json::object(), 600.0});
+      // Gone or not running: the foreground stage could not run either, so say so now.
+      if (!l.ok && l.error == ErrorKind::Unavailable) throw std::runtime_error("the foreground agent failed (light): " + l.message);
+      timings["light"] = seconds_since(t0);
+      reuse["light"] = l.ok && !l.result.value("estimated", false);
+      if (progress) progress("light", 1.0, l.ok ? "light: " + l.result.value("sky_type", std::string("?")) + " sky, sun from " + l.result.value("sun_cue", std::string("?"))
+                                                : "light: not estimated ahead (" + l.message + "); the stages estimate it");
+    }
     RenderJob job;
     job.view = view;
     job.model = model;

@@ -4,10 +4,14 @@
 // skipped otherwise. Namespaces and processes are always cleaned up.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -99,6 +103,25 @@ RunResult run_on(const std::string& yaml, const fs::path& dir, const fs::path& s
   return r;
 }
 
+// How many cores' worth of work this machine does in parallel right now: the same busy loop
+// on one thread, then on two at once. About 2 on an idle 2-core machine; near 1 where the
+// machine is shared or throttled, and there two workers cannot be faster (CI once saw 0.86).
+double parallel_capacity() {
+  auto spin = [] {
+    volatile double x = 1.0;
+    for (long i = 0; i < 150'000'000; ++i) x = x * 1.0000001 + 1e-9;
+  };
+  auto seconds = [](int threads, auto work) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::thread> ts;
+    for (int i = 0; i < threads; ++i) ts.emplace_back(work);
+    for (auto& t : ts) t.join();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  const double one = seconds(1, spin), two = seconds(2, spin);
+  return 2.0 * one / two;
+}
+
 }  // namespace
 
 TEST(Cluster, WorkersInOtherNetworkNamespacesGiveTheSameFramesFaster) {
@@ -109,10 +132,12 @@ TEST(Cluster, WorkersInOtherNetworkNamespacesGiveTheSameFramesFaster) {
   ASSERT_EQ(sh(bin("chatsim") + " scene demo --out " + (root / "scene").string() +
                " --preset small --frames 16 --no-plates --no-views --seed 6"),
             0);
+  const double capacity_before = parallel_capacity();
   const RunResult one = run_on(launch_file(false, root / "one" / "cache"), root / "one", root / "scene", root / "one-out");
   ASSERT_TRUE(one.ok) << test_support::read_file(root / "one" / "run.log") << test_support::read_file(root / "one" / "launch.log");
   const RunResult two = run_on(launch_file(true, root / "two" / "cache"), root / "two", root / "scene", root / "two-out");
   ASSERT_TRUE(two.ok) << test_support::read_file(root / "two" / "run.log") << test_support::read_file(root / "two" / "launch.log");
+  const double capacity = std::min(capacity_before, parallel_capacity());
   // The same frames, bit for bit.
   int compared = 0;
   for (const auto& cam : fs::directory_iterator(root / "one-out" / "frames"))
@@ -123,13 +148,23 @@ TEST(Cluster, WorkersInOtherNetworkNamespacesGiveTheSameFramesFaster) {
       ++compared;
     }
   EXPECT_EQ(compared, 48);  // 3 cameras x 16 frames
-  // Faster with two workers per kind (one thread each) than with one.
+  // Faster with two workers per kind (one thread each) than with one, by as much as the cores
+  // this machine gives in parallel allow: under 0.85 of one worker's time with two cores'
+  // worth (0.65 and 0.71 seen here), relaxed toward 1 as the measured capacity falls.
   auto stages = [](const nlohmann::json& r) { return r["seconds"]["background"].get<double>() + r["seconds"]["foreground"].get<double>(); };
-  EXPECT_LT(stages(two.result), 0.85 * stages(one.result))
-      << "one worker: " << stages(one.result) << " s, two: " << stages(two.result) << " s";
   RecordProperty("one_worker_s", std::to_string(stages(one.result)));
   RecordProperty("two_workers_s", std::to_string(stages(two.result)));
+  RecordProperty("parallel_capacity", std::to_string(capacity));
+  std::cout << "parallel capacity " << capacity << " cores; one worker " << stages(one.result) << " s, two " << stages(two.result) << " s\n";
+  if (capacity >= 1.3) {
+    const double bound = 1.0 - 0.3 * (1.0 - 1.0 / std::min(capacity, 2.0));
+    EXPECT_LT(stages(two.result), bound * stages(one.result))
+        << "one worker: " << stages(one.result) << " s, two: " << stages(two.result) << " s, capacity " << capacity;
+  } else {
+    std::cout << "the speed comparison is not asserted: this machine gave " << capacity << " cores' worth in parallel\n";
+  }
   for (const char* name : {"chatsim-manager", "chatsim-backgro", "chatsim-bus"})
     EXPECT_EQ(test_support::count_with_env(name, root.string()), 0) << name;
-  fs::remove_all(root);
+  if (HasFailure()) std::cout << "kept for a look: " << root << "\n";  // logs and result.json of both runs
+  else fs::remove_all(root);
 }

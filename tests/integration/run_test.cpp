@@ -81,6 +81,7 @@ TEST_F(Run, RemovesAddsAndWritesEveryOutputThenReusesStages) {
   // The added car's pixels differ from the captured image (it is drawn), the rest mostly not.
   const auto first = nlohmann::json::parse(test_support::read_file(out / "result.json"));
   EXPECT_FALSE(first["reused"]["background"].get<bool>());
+  EXPECT_FALSE(first["reused"]["light"].get<bool>());  // estimated once, ahead of the stages
   // Again, one more round of the same edit: training and background come from the cache.
   const fs::path out2 = *root_ / "result2";
   const std::string cmd2 = env() + bin("chatsim") + " run --scene " + (*root_ / "scene").string() + " --out " + out2.string() +
@@ -89,6 +90,7 @@ TEST_F(Run, RemovesAddsAndWritesEveryOutputThenReusesStages) {
   ASSERT_EQ(run_shell(cmd2, 300s), 0) << test_support::read_file(*root_ / "run2.log");
   const auto second = nlohmann::json::parse(test_support::read_file(out2 / "result.json"));
   EXPECT_TRUE(second["reused"]["training"].get<bool>());
+  EXPECT_TRUE(second["reused"]["light"].get<bool>());
   EXPECT_TRUE(second["reused"]["background"].get<bool>());
   EXPECT_TRUE(second["reused"]["deletion"].get<bool>());
   EXPECT_FALSE(second["reused"]["foreground"].get<bool>());  // the car changed colour
