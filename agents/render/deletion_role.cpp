@@ -18,24 +18,6 @@ using chatsim::render::inpaint::DeletionImage;
 
 namespace {
 
-// The model's view without the deleted objects, rendered only inside `roi` (a camera cropped
-// to it) and placed in full-size images: radiance and depth, zero outside.
-struct Behind {
-  cv::Mat radiance, depth;
-};
-Behind render_behind(const chatsim::render::gs::RadianceField& model, const scene::Scene& s, const DeletionImage& im,
-                     const std::vector<std::string>& hidden, const cv::Rect& roi) {
-  Behind b{cv::Mat(im.cam.height, im.cam.width, CV_32FC3, cv::Scalar::all(0)), cv::Mat(im.cam.height, im.cam.width, CV_32F, cv::Scalar(0))};
-  if (roi.empty()) return b;
-  scene::Camera crop = im.cam;
-  crop.width = roi.width, crop.height = roi.height;
-  crop.cx -= roi.x, crop.cy -= roi.y;
-  const auto out = model.render(s, crop, im.pose, im.time, hidden);
-  out.radiance.copyTo(b.radiance(roi));
-  out.depth.copyTo(b.depth(roi));
-  return b;
-}
-
 cv::Rect padded_bounds(const cv::Mat& mask, int pad) {
   const cv::Rect r = cv::boundingRect(mask);
   if (r.empty()) return r;
@@ -66,7 +48,7 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       targets.push_back(std::move(d));
     }
     chatsim::render::inpaint::DeletionStats stats;
-    std::map<std::pair<int, std::string>, Behind> rendered;  // the model's view without the removed objects
+    std::map<std::pair<int, std::string>, chatsim::render::gs::GsImage> rendered;  // the model's view without the removed objects
     if (!job.removed.empty()) {
       const auto sources = chatsim::render::inpaint::scene_images(*s);
       // Follow the deleted objects' shadows with the scene's estimated sun.
@@ -79,7 +61,7 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
           // Only where the deletion needs it (the caller uses the pixels it could not fill);
           // kept, so the depth below needs no second render.
           const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, hidden, opts);
-          Behind& b = rendered[{im.frame, im.camera}] = render_behind(*model, *s, im, hidden, padded_bounds(mask, 2));
+          const auto& b = rendered[{im.frame, im.camera}] = model->render_region(*s, im.cam, im.pose, im.time, hidden, padded_bounds(mask, 2));
           return b.radiance;
         };
       stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
@@ -96,7 +78,7 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
         if (cv::countNonZero(mask) > 0) {
           // The fill's render covers the mask with the shadows (a superset of this one).
           const auto it = rendered.find({im.frame, im.camera});
-          const Behind b = it != rendered.end() ? it->second : render_behind(*model, *s, im, job.removed, padded_bounds(mask, 2));
+          const auto b = it != rendered.end() ? it->second : model->render_region(*s, im.cam, im.pose, im.time, job.removed, padded_bounds(mask, 2));
           b.depth.copyTo(depth, mask);
         }
       }

@@ -1,17 +1,19 @@
 // chatsim eval deletion: vehicle deletion against the demo scene's clean plates.
 #include <fstream>
 #include <iostream>
+#include <memory>
 
 #include "common/util/exit_codes.hpp"
 #include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
+#include "render/gs/model.hpp"
 #include "render/inpaint/deletion_eval.hpp"
 
 namespace chatsim::cli {
 namespace {
 
 struct EvalDeletionArgs {
-  std::string scene, out, save;
+  std::string scene, out, save, model;
   std::vector<std::string> objects;
   int max_objects = 0;
 };
@@ -22,6 +24,10 @@ int run_eval_deletion(const EvalDeletionArgs& a) {
     render::inpaint::DeletionEvalOptions o;
     o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
     o.objects = a.objects;
+    if (!a.model.empty()) {
+      // As the deletion agent does: the field's view without the vehicle, where the map ends.
+      o.background = render::inpaint::field_renderer(std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.model)), s);
+    }
     o.max_objects = a.max_objects;
     o.save_dir = a.save;
     const auto r = render::inpaint::evaluate_deletion(s, o);
@@ -43,6 +49,9 @@ void add_eval_deletion_command(CLI::App& eval, int& result) {
   cmd->add_option("--max-objects", a->max_objects, "at most this many (largest plates first)");
   cmd->add_option("--out", a->out, "also write the JSON here");
   cmd->add_option("--save", a->save, "write before / after / baseline / plate images here");
+  cmd->add_option("--model", a->model,
+                  "a radiance field of this scene (chatsim train): fill what the ground map cannot from it, as the deletion "
+                  "agent does (default: 2D inpainting)")->check(CLI::ExistingFile);
   cmd->callback([a, &result] { result = run_eval_deletion(*a); });
 }
 

@@ -47,33 +47,13 @@ int run_eval_light(const EvalLightArgs& a) {
     std::cerr << "error: nothing to evaluate: give --hdri FILE (an HDR panorama) and/or --scene DIR (a demo scene)\n";
     return exit_code::kUsage;
   }
-  nlohmann::json all = nlohmann::json::array();
-  std::vector<double> angles, logs;
-  for (const auto& file : a.hdri) {
-    try {
-      const auto pano = render::EnvMap::read(file);
-      auto r = render::light::evaluate_on_panorama(pano, fs::path(file).filename().string(), a.headings, a.width, a.save_views);
-      std::cerr << r["panorama"].get<std::string>() << ": median peak error " << r["median_angular_error_deg"].get<double>()
-                << " deg, median log10 intensity error " << r["median_log10_intensity_error"].get<double>() << "\n";
-      for (const auto& h : r["headings"]) {
-        angles.push_back(h["peak_angular_error_deg"]);
-        logs.push_back(h["log10_intensity_error"]);
-      }
-      all.push_back(r);
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      return exit_code::kUsage;
-    }
+  nlohmann::json report;
+  try {
+    report = render::light::evaluate_panoramas(a.hdri, a.headings, a.width, a.save_views, [](const std::string& line) { std::cerr << line << "\n"; });
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_code::kUsage;
   }
-  auto median = [](std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
-  nlohmann::json report{{"panoramas", all},
-                        {"median_angular_error_deg", median(angles)},
-                        {"median_log10_intensity_error", median(logs)},
-                        {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
   if (!a.scene.empty()) {
     const int rc = exit_code_of([&] {
       const auto s = scene::load_scene(a.scene);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,7 @@
 #include "common/util/exit_codes.hpp"
 #include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
+#include "render/gs/model.hpp"
 #include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
 #include "render/inpaint/deletion_eval.hpp"
@@ -63,36 +65,9 @@ struct LightArgs {
 };
 
 int run_light(const LightArgs& a) {
-  json all = json::array();
+  json report = render::light::evaluate_panoramas(a.hdri, a.headings, a.width, a.save_views, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
   std::vector<bench::ChartPoint> pts;
-  std::vector<double> angles, logs;
-  for (const auto& f : a.hdri) {
-    const auto pano = render::EnvMap::read(f);
-    const json r = render::light::evaluate_on_panorama(pano, fs::path(f).filename().string(), a.headings, a.width, a.save_views);
-    all.push_back(r);
-    pts.push_back({r["panorama"], r["median_seconds"], r["median_angular_error_deg"]});
-    for (const auto& h : r["headings"]) angles.push_back(h["peak_angular_error_deg"]), logs.push_back(h["log10_intensity_error"]);
-    std::printf("%-16s median peak error %6.1f deg, log10 intensity error %.2f\n", r["panorama"].get<std::string>().c_str(),
-                r["median_angular_error_deg"].get<double>(), r["median_log10_intensity_error"].get<double>());
-  }
-  // The baseline, in the same run: a fixed guess (sun 45 degrees up, straight ahead of the car).
-  auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-  };
-  std::vector<double> base;
-  for (const auto& r : all)
-    for (const auto& h : r["headings"]) {
-      const double heading = h["heading_deg"].get<double>() * M_PI / 180;
-      const Eigen::Vector3f guess(float(std::cos(heading) * 0.707), float(std::sin(heading) * 0.707), 0.707f);
-      const Eigen::Vector3f peak(r["peak_direction"][0].get<float>(), r["peak_direction"][1].get<float>(), r["peak_direction"][2].get<float>());
-      base.push_back(std::acos(std::clamp(double(guess.dot(peak)), -1.0, 1.0)) * 180 / M_PI);
-    }
-  json report{{"panoramas", all},
-              {"median_angular_error_deg", median(angles)},
-              {"median_log10_intensity_error", median(logs)},
-              {"baseline_fixed_guess_median_angular_error_deg", median(base)},
-              {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
+  for (const auto& r : report["panoramas"]) pts.push_back({r["panorama"], r["median_seconds"], r["median_angular_error_deg"]});
   if (!a.scene.empty()) {
     // A scene with vehicles and their shadows, which the panoramas do not have.
     const auto s = scene::load_scene(a.scene);
@@ -108,13 +83,15 @@ int run_light(const LightArgs& a) {
   bench::write_scatter_png(png, {"Lighting estimation: median sun direction error per panorama (and scene, against its truth)", "seconds per estimate",
                                  "median peak error [deg] (lower is better)", true},
                            pts);
-  std::printf("all: median peak error %.1f deg (fixed-guess baseline %.1f deg), median log10 intensity error %.2f\n",
-              median(angles), median(base), median(logs));
+  if (!a.hdri.empty())
+    std::printf("all: median peak error %.1f deg (fixed-guess baseline %.1f deg), median log10 intensity error %.2f\n",
+                report["median_angular_error_deg"].get<double>(), report["baseline_fixed_guess_median_angular_error_deg"].get<double>(),
+                report["median_log10_intensity_error"].get<double>());
   return exit_code::kOk;
 }
 
 struct DeletionArgs {
-  std::string scene, out = "bench/results/deletion.json", save, pair_scene;
+  std::string scene, out = "bench/results/deletion.json", save, pair_scene, model;
   int max_objects = 6;
 };
 
@@ -125,6 +102,12 @@ int run_deletion(const DeletionArgs& a) {
   o.max_objects = a.max_objects;
   o.save_dir = a.save;
   json r = render::inpaint::evaluate_deletion(s, o);
+  if (!a.model.empty()) {
+    // What the deletion agent does: the radiance field fills what the ground map cannot.
+    o.background = render::inpaint::field_renderer(std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.model)), s);
+    o.save_dir = a.save.empty() ? "" : a.save + "/with-field";
+    r["with_field"] = render::inpaint::evaluate_deletion(s, o)["summary"];
+  }
   if (!a.pair_scene.empty()) {
     // A real capture has no clean plates: a before / after pair beside the report instead.
     const auto ps = scene::load_scene(a.pair_scene);
@@ -137,9 +120,15 @@ int run_deletion(const DeletionArgs& a) {
   fs::path png(a.out);
   png.replace_extension(".png");
   const auto& sm = r["summary"];
-  bench::write_scatter_png(png, {"Deletion inside the mask vs clean plates", "seconds per image", "PSNR in the mask [dB]", true},
-                           {{"ground map + exemplar", sm["seconds_per_image"], sm["psnr"]},
-                            {"cv::inpaint Telea", sm["baseline_seconds_per_image"], sm["baseline_psnr"]}});
+  std::vector<bench::ChartPoint> pts{{"ground map + exemplar", sm["seconds_per_image"], sm["psnr"]},
+                                     {"cv::inpaint Telea", sm["baseline_seconds_per_image"], sm["baseline_psnr"]}};
+  if (r.contains("with_field")) {
+    const auto& f = r["with_field"];
+    pts.push_back({"ground map + radiance field (the agent)", f["seconds_per_image"], f["psnr"]});
+    std::printf("deletion with the radiance field behind: PSNR %.2f dB, SSIM %.3f, %.2f s per image, flicker %.2f\n", f["psnr"].get<double>(),
+                f["ssim"].get<double>(), f["seconds_per_image"].get<double>(), f["flicker"].get<double>());
+  }
+  bench::write_scatter_png(png, {"Deletion inside the mask vs clean plates", "seconds per image", "PSNR in the mask [dB]", true}, pts);
   std::printf("deletion: PSNR %.2f dB (Telea %.2f dB), %.2f s per image (Telea %.2f s), flicker %.2f (Telea %.2f)\n",
               sm["psnr"].get<double>(), sm["baseline_psnr"].get<double>(), sm["seconds_per_image"].get<double>(),
               sm["baseline_seconds_per_image"].get<double>(), sm["flicker"].get<double>(), sm["baseline_flicker"].get<double>());
@@ -268,6 +257,10 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   del->add_option("--out", da->out, "JSON report (a PNG chart beside it)");
   del->add_option("--max-objects", da->max_objects, "vehicles to remove (largest plates first)");
   del->add_option("--save", da->save, "before / after / baseline / plate images here");
+  del->add_option("--model", da->model,
+                  "a radiance field of the scene (chatsim train, or the one chatsim run cached): also measure the fill the "
+                  "deletion agent makes, with the field behind the vehicle")
+      ->check(CLI::ExistingFile);
   del->add_option("--pair-scene", da->pair_scene,
                   "also remove a parked vehicle from this scene (e.g. the imported nuScenes scene) and save a "
                   "before / after / Telea image set beside the report")

@@ -97,6 +97,22 @@ GsImage RadianceField::render(const scene::Scene& scene, const scene::Camera& ca
   return img;
 }
 
+GsImage RadianceField::render_region(const scene::Scene& scene, const scene::Camera& camera, const Eigen::Isometry3d& c2w,
+                                     double t, const std::vector<std::string>& hide, const cv::Rect& roi) const {
+  GsImage full{cv::Mat(camera.height, camera.width, CV_32FC3, cv::Scalar::all(0)), cv::Mat(camera.height, camera.width, CV_32F, cv::Scalar(0)),
+               cv::Mat(camera.height, camera.width, CV_32F, cv::Scalar(0))};
+  const cv::Rect r = roi & cv::Rect(0, 0, camera.width, camera.height);
+  if (r.empty()) return full;
+  scene::Camera crop = camera;
+  crop.width = r.width, crop.height = r.height;
+  crop.cx -= r.x, crop.cy -= r.y;
+  const GsImage out = render(scene, crop, c2w, t, hide);
+  out.radiance.copyTo(full.radiance(r));
+  out.depth.copyTo(full.depth(r));
+  out.alpha.copyTo(full.alpha(r));
+  return full;
+}
+
 Eigen::Isometry3d RadianceField::corrected_pose(const scene::Scene& scene, int frame, const std::string& camera) const {
   const auto* cam = scene.camera(camera);
   const scene::Frame* fr = nullptr;

@@ -52,6 +52,10 @@ class RadianceField {
   // Renders a view: HDR radiance (scene units), expected depth (m; +inf where transparent) and alpha.
   GsImage render(const scene::Scene& scene, const scene::Camera& camera, const Eigen::Isometry3d& camera_to_world,
                  double time_s, const std::vector<std::string>& hide = {}, int threads = 0) const;
+  // The same view rendered only inside `roi` (the camera cropped to it), placed in full-size
+  // images: radiance and alpha zero outside it, depth 0 there.
+  GsImage render_region(const scene::Scene& scene, const scene::Camera& camera, const Eigen::Isometry3d& camera_to_world,
+                        double time_s, const std::vector<std::string>& hide, const cv::Rect& roi) const;
   // The recorded pose of an image with the learned corrections applied.
   Eigen::Isometry3d corrected_pose(const scene::Scene& scene, int frame, const std::string& camera) const;
   // The exposure (s) to show an image of the scene with: exposure_s x the learned correction.

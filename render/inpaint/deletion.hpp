@@ -8,6 +8,7 @@
 // ground (what stood behind the object) come from a renderer without the object when one is
 // given, else from 2D inpainting; the seam is feathered.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,10 @@
 #include <opencv2/core.hpp>
 
 #include "common/scene/scene.hpp"
+
+namespace chatsim::render::gs {
+class RadianceField;
+}
 
 namespace chatsim::render::inpaint {
 
@@ -57,6 +62,11 @@ cv::Mat deletion_mask(const scene::Scene& scene, const DeletionImage& image, con
 DeletionStats delete_objects(const scene::Scene& scene, const std::vector<std::string>& ids, std::vector<DeletionImage>& targets,
                              const std::vector<DeletionImage>& sources, const DeletionOptions& options = {},
                              const BackgroundRenderer& background = nullptr);
+
+// The radiance field's view without the hidden objects, rendered only around their masks (as
+// the deletion agent fills what the ground map cannot). `scene` must outlive the renderer.
+BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model, const scene::Scene& scene,
+                                  const DeletionOptions& options = {});
 
 // A scene's captured images as deletion inputs (linear radiance at the recorded poses).
 std::vector<DeletionImage> scene_images(const scene::Scene& scene);

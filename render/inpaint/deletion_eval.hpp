@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/scene/scene.hpp"
+#include "render/inpaint/deletion.hpp"
 
 namespace chatsim::render::inpaint {
 
@@ -17,6 +18,7 @@ struct DeletionEvalOptions {
   std::vector<std::string> objects;  // empty: every vehicle with plates
   int max_objects = 0;               // 0: no limit (the largest plates first)
   std::string save_dir;              // before / after / baseline / plate images
+  BackgroundRenderer background;     // what the ground map cannot fill (the agent's radiance field); empty: 2D inpainting
   std::function<void(const std::string&)> progress;  // one line per object, when set
 };
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 #include <opencv2/imgproc.hpp>
@@ -22,6 +23,7 @@ namespace {
 constexpr double kCapDeg = 5, kRingDeg = 10;
 
 double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();  // null in the JSON: nothing measured
   std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
   return v[v.size() / 2];
 }
@@ -152,6 +154,36 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
           {"median_seconds", median(seconds)},
           {"estimated_sunny", sunny},
           {"headings", results}};
+}
+
+nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int headings, int width, const std::string& save_dir,
+                                  const std::function<void(const std::string&)>& progress) {
+  nlohmann::json all = nlohmann::json::array();
+  std::vector<double> angles, logs, baseline;
+  for (const auto& file : files) {
+    const auto pano = EnvMap::read(file);
+    const nlohmann::json r = evaluate_on_panorama(pano, std::filesystem::path(file).filename().string(), headings, width, save_dir);
+    const Eigen::Vector3f peak(r["peak_direction"][0].get<float>(), r["peak_direction"][1].get<float>(), r["peak_direction"][2].get<float>());
+    for (const auto& h : r["headings"]) {
+      angles.push_back(h["peak_angular_error_deg"]);
+      logs.push_back(h["log10_intensity_error"]);
+      const double heading = h["heading_deg"].get<double>() * M_PI / 180;
+      const Eigen::Vector3f guess(float(std::cos(heading) * 0.707), float(std::sin(heading) * 0.707), 0.707f);
+      baseline.push_back(std::acos(std::clamp(double(guess.dot(peak)), -1.0, 1.0)) * 180 / M_PI);
+    }
+    if (progress) {
+      char line[256];
+      std::snprintf(line, sizeof line, "%s: median peak error %.1f deg, median log10 intensity error %.2f", r["panorama"].get<std::string>().c_str(),
+                    r["median_angular_error_deg"].get<double>(), r["median_log10_intensity_error"].get<double>());
+      progress(line);
+    }
+    all.push_back(r);
+  }
+  return {{"panoramas", all},
+          {"median_angular_error_deg", median(angles)},
+          {"median_log10_intensity_error", median(logs)},
+          {"baseline_fixed_guess_median_angular_error_deg", median(baseline)},
+          {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
 }
 
 nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::function<void(const std::string&)>& progress) {

@@ -6,6 +6,7 @@
 // irradiance of the 5-degree cap around the peak above its surroundings).
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,13 @@ PanoramaPeak panorama_peak(const EnvMap& panorama);
 // written there (<name>-<heading>.png: left, front and right side by side) for a person to look at.
 nlohmann::json evaluate_on_panorama(const EnvMap& panorama, const std::string& name, int headings = 8, int width = 480,
                                     const std::string& save_dir = "");
+
+// Every panorama file (EXR or HDR) through evaluate_on_panorama, with the medians over all their
+// headings, the targets, and the baseline measured in the same run: a fixed guess (the sun 45
+// degrees up, straight ahead of the car). `progress` gets one line per panorama. Throws on a
+// file that does not read, naming it.
+nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int headings, int width, const std::string& save_dir = "",
+                                  const std::function<void(const std::string&)>& progress = nullptr);
 
 // The estimate on a scene whose sky is known (the demo scene's ground_truth/sky.json), with the
 // scene's own cameras, vehicles and their shadows: the sun's angular error and log10 intensity
