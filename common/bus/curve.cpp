@@ -1,7 +1,7 @@
 #include "common/bus/curve.hpp"
 
 #include <sys/stat.h>
-#include <zmq_utils.h>
+#include <zmq.h>  // zmq_utils.h is deprecated: zmq.h has the CURVE and Z85 helpers
 
 #include <cstdlib>
 #include <fstream>
