@@ -33,27 +33,27 @@ r::light::LightEstimate scene_light(const scene::Scene& s, bool* estimated) {
   const fs::path dir = scene_cache_dir(s);
   const fs::path lj = dir / "light.json";
   r::light::LightEstimate est;
-  if (fs::exists(lj)) {
-    const json j = json::parse(std::ifstream(lj));
-    est.sunny = j["sky_type"] == "sunny";
+  // An estimate from before the clip's (with one "frame", not "frames") is made again.
+  const json cached = fs::exists(lj) ? json::parse(std::ifstream(lj)) : json();
+  if (cached.contains("frames")) {
+    est.sunny = cached["sky_type"] == "sunny";
     for (int k = 0; k < 3; ++k) {
-      est.sky.sun_direction[k] = j["sun_direction_world"][size_t(k)];
-      est.sun_radiance[k] = j["sun_radiance_rgb"][size_t(k)];
+      est.sky.sun_direction[k] = cached["sun_direction_world"][size_t(k)];
+      est.sun_radiance[k] = cached["sun_radiance_rgb"][size_t(k)];
     }
-    est.sky.turbidity = j.value("turbidity", 3.0f);
+    est.sky.turbidity = cached.value("turbidity", 3.0f);
     est.sky.overcast = !est.sunny;
-    est.scale = j.value("scale", 1.0f);
-    est.sun_cue = j.value("sun_cue", "");
+    est.scale = cached.value("scale", 1.0f);
+    est.sun_cue = cached.value("sun_cue", "");
     return est;
   }
-  const int frame = s.frames.empty() ? 0 : s.frames[s.frames.size() / 2].index;
-  est = r::light::estimate_light(r::light::scene_light_views(s, frame), r::light::scene_ground_boxes(s, frame));
+  est = r::light::estimate_scene_light(s);
   if (estimated != nullptr) *estimated = true;
   fs::create_directories(dir);
   est.dome().write_exr(dir / "sky.exr");
   json j = est.to_json("sky.exr");
   j["scale"] = est.scale;
-  j["frame"] = frame;
+  j["frames"] = r::light::scene_light_frames(s);
   // Workers on other hosts may estimate at the same time: each writes its own temporary file.
   const fs::path tmp = dir / (".light.json.part" + std::to_string(getpid()));
   std::ofstream(tmp) << j.dump(1) << "\n";

@@ -3,7 +3,9 @@
 // radiance units. Sky pixels (bright, smooth, above the horizon, reached from the top of the
 // image, clipped ones as lower bounds) are fitted by a Preetham clear sky or a CIE overcast
 // sky; the sun's direction is searched, scoring that fit together with the shadows labelled
-// boxes would cast on the ground, and a visible sun blob is taken where the fit agrees with it;
+// boxes would cast on the ground (how much darker the predicted shadow is, and how well its
+// outline fits the dark ground; boxes matched to the views of their own instant, so several
+// instants of a clip add up), and a visible sun blob is taken where the fit agrees with it;
 // its intensity from the lit-to-shadow contrast on the ground, else from the fitted sky.
 #include <optional>
 #include <string>
@@ -24,12 +26,14 @@ struct LightView {
   Eigen::Isometry3d camera_to_world;  // world z up
   cv::Mat rgb;                        // CV_8UC3, RGB
   double exposure = 1.0;              // seconds (1: unknown)
+  int frame = -1;                     // which instant (boxes are matched to views of theirs); -1: any
 };
 
 struct GroundBox {                    // a labelled object standing on the ground (shadow cue)
   Eigen::Vector3d center;
   Eigen::Vector3d size_lwh;
   double yaw = 0;
+  int frame = -1;                     // the instant it stands there; -1: in every view
 };
 
 struct LightEstimate {
@@ -52,6 +56,12 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
 // The views and boxes of one frame of a scene (all its cameras).
 std::vector<LightView> scene_light_views(const scene::Scene& scene, int frame);
 std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);
+
+// A scene's light, from `frames` instants spread over its clip (the sun does not move in a
+// clip; every instant adds vehicles whose shadows are measurable).
+LightEstimate estimate_scene_light(const scene::Scene& scene, int frames = 4);
+// The frames that estimate uses.
+std::vector<int> scene_light_frames(const scene::Scene& scene, int frames = 4);
 
 // Which pixels of a view show the sky (CV_8UC1, 255 = sky).
 cv::Mat sky_mask(const LightView& view);

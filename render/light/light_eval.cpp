@@ -186,7 +186,7 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
           {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
 }
 
-nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::function<void(const std::string&)>& progress) {
+nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::function<void(const std::string&)>& progress, int clip_frames) {
   const auto truth_file = s.dir / "ground_truth" / "sky.json";
   std::ifstream in(truth_file);
   if (!in) throw std::invalid_argument(truth_file.string() + ": no ground-truth sky (only a generated demo scene has one: chatsim scene demo)");
@@ -224,12 +224,31 @@ nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::fu
     }
   }
   if (angles.empty()) throw std::invalid_argument(s.dir.string() + ": no frame with images to estimate from");
+  // What the agents use: one estimate from frames spread over the clip.
+  const auto t0 = std::chrono::steady_clock::now();
+  const LightEstimate clip = estimate_scene_light(s, clip_frames);
+  const double clip_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double clip_angle = std::acos(std::clamp(double(clip.sky.sun_direction.normalized().dot(sun)), -1.0, 1.0)) * 180 / M_PI;
+  const double clip_log = std::abs(std::log10(std::max(double(luminance(clip.sun_radiance)), 1e-12) / std::max(sun_lum, 1e-12)));
+  if (progress) {
+    char line[200];
+    std::snprintf(line, sizeof line, "clip of %d frames: sun %.1f deg off (%s), log10 intensity error %.2f, %.1f s", clip_frames, clip_angle,
+                  clip.sun_cue.c_str(), clip_log, clip_secs);
+    progress(line);
+  }
   return {{"scene", s.name},
           {"sun_direction", {sun.x(), sun.y(), sun.z()}},
           {"median_angular_error_deg", median(angles)},
           {"median_log10_intensity_error", median(logs)},
           {"median_seconds", median(seconds)},
-          {"frames", frames}};
+          {"frames", frames},
+          {"clip",
+           {{"frames", scene_light_frames(s, clip_frames)},
+            {"sky_type", clip.sunny ? "sunny" : "overcast"},
+            {"sun_cue", clip.sun_cue},
+            {"peak_angular_error_deg", clip_angle},
+            {"log10_intensity_error", clip_log},
+            {"seconds", clip_secs}}}};
 }
 
 }  // namespace chatsim::render::light

@@ -37,7 +37,8 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
 // scene's own cameras, vehicles and their shadows: the sun's angular error and log10 intensity
 // error on every `every`-th frame, and their medians. Throws naming the file when the scene has
 // no ground-truth sky.
+// Also the estimate the agents use, from `clip_frames` frames spread over the clip ("clip").
 nlohmann::json evaluate_on_scene(const scene::Scene& scene, int every = 5,
-                                 const std::function<void(const std::string&)>& progress = nullptr);
+                                 const std::function<void(const std::string&)>& progress = nullptr, int clip_frames = 4);
 
 }  // namespace chatsim::render::light

@@ -158,6 +158,10 @@ TEST_F(DemoScene, LightEvaluationComparesWithTheGroundTruthSkyAndNamesItWhenMiss
     EXPECT_GE(f["peak_angular_error_deg"].get<double>(), 0.0);
     EXPECT_LE(f["peak_angular_error_deg"].get<double>(), 180.0);
   }
+  // And the estimate the agents use, from frames spread over the clip (4 of its 4 here).
+  EXPECT_EQ(r["clip"]["frames"], nlohmann::json({0, 1, 2, 3})) << r.dump(1);
+  EXPECT_GE(r["clip"]["peak_angular_error_deg"].get<double>(), 0.0);
+  EXPECT_LE(r["clip"]["peak_angular_error_deg"].get<double>(), 180.0);
   const fs::path copy = fs::temp_directory_path() / ("chatsim-light-eval-test-" + std::to_string(getpid()));
   fs::remove_all(copy);
   fs::copy(*dir_, copy, fs::copy_options::recursive);

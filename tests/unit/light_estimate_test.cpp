@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "render/equirect.hpp"
+#include "render/light/light_estimate.hpp"
 #include "render/light/light_eval.hpp"
 #include "render/sky.hpp"
 
@@ -82,6 +83,84 @@ TEST(LightEstimate, ABrightWindowInAFacadeIsNotTheSun) {
     }
   const auto r = light::evaluate_on_panorama(env, "window", 1, 240);
   EXPECT_NE(heading(r, 0)["sun_cue"], "visible");
+}
+
+// A grey road under a featureless sky, one car at each of two instants, and the shadow each
+// casts for a known sun painted where it falls: the sun comes from the shadows alone (the sky
+// says nothing), each car measured in the views of its own instant.
+TEST(LightEstimate, ShadowsOfCarsAtTwoInstantsGiveTheSun) {
+  const Eigen::Vector3d sun = dir_deg(100, 40).cast<double>();
+  const Eigen::Vector3d size(4.5, 1.8, 1.5);
+  struct Instant {
+    Eigen::Vector3d ego, car;
+  };
+  const std::vector<Instant> instants{{{0, 0, 1.6}, {9, 3.5, 0.75}}, {{4, 0, 1.6}, {14, -3.5, 0.75}}};
+  // Where a ray meets the axis-aligned box (slab test).
+  auto hits = [&](const Eigen::Vector3d& o, const Eigen::Vector3d& d, const Eigen::Vector3d& c) {
+    double t0 = 0, t1 = 1e9;
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(d[k]) < 1e-12) {
+        if (std::abs(o[k] - c[k]) > size[k] / 2) return false;
+        continue;
+      }
+      double a = (c[k] - size[k] / 2 - o[k]) / d[k], b = (c[k] + size[k] / 2 - o[k]) / d[k];
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a), t1 = std::min(t1, b);
+    }
+    return t0 <= t1;
+  };
+  std::vector<light::LightView> views;
+  std::vector<light::GroundBox> boxes;
+  for (size_t i = 0; i < instants.size(); ++i) {
+    const auto& in = instants[i];
+    light::LightView v;
+    v.camera.name = "front";
+    v.camera.width = 320, v.camera.height = 200;
+    v.camera.fx = v.camera.fy = 200, v.camera.cx = 159.5, v.camera.cy = 99.5;
+    Eigen::Matrix3d cv_in_flu;
+    cv_in_flu << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+    v.camera_to_world = Eigen::Isometry3d::Identity();
+    v.camera_to_world.linear() = cv_in_flu;
+    v.camera_to_world.translation() = in.ego;
+    v.frame = int(i);
+    v.rgb = cv::Mat(200, 320, CV_8UC3);
+    for (int y = 0; y < 200; ++y)
+      for (int x = 0; x < 320; ++x) {
+        const Eigen::Vector3d d = cv_in_flu * Eigen::Vector3d((x - 159.5) / 200, (y - 99.5) / 200, 1);
+        cv::Vec3b c(150, 180, 230);  // sky
+        if (hits(in.ego, d.normalized(), in.car)) {
+          c = cv::Vec3b(70, 70, 80);  // the car
+        } else if (d.z() < 0) {
+          const Eigen::Vector3d ground = in.ego + d * (-in.ego.z() / d.z());
+          c = hits(ground + Eigen::Vector3d(0, 0, 1e-3), sun, in.car) ? cv::Vec3b(45, 45, 48) : cv::Vec3b(130, 130, 128);
+        }
+        v.rgb.at<cv::Vec3b>(y, x) = c;
+      }
+    views.push_back(v);
+    boxes.push_back({in.car, size, 0.0, int(i)});
+  }
+  const auto est = light::estimate_light(views, boxes);
+  EXPECT_TRUE(est.sunny);
+  EXPECT_EQ(est.sun_cue, "shadows");
+  const double err = std::acos(std::clamp(est.sky.sun_direction.normalized().cast<double>().dot(sun), -1.0, 1.0)) * 180 / M_PI;
+  EXPECT_LT(err, 10.0) << "estimated " << est.sky.sun_direction.transpose();
+}
+
+// The clip's estimate takes the middle frame of equal parts of the clip, and no more frames
+// than there are.
+TEST(LightEstimate, AClipIsSampledAtTheMiddlesOfEqualParts) {
+  scene::Scene s;
+  for (int i = 0; i < 40; ++i) {
+    scene::Frame f;
+    f.index = 100 + i;
+    s.frames.push_back(f);
+  }
+  EXPECT_EQ(light::scene_light_frames(s, 4), (std::vector<int>{105, 115, 125, 135}));
+  EXPECT_EQ(light::scene_light_frames(s, 1), (std::vector<int>{120}));
+  s.frames.resize(3);
+  EXPECT_EQ(light::scene_light_frames(s, 4), (std::vector<int>{100, 101, 102}));
+  s.frames.clear();
+  EXPECT_TRUE(light::scene_light_frames(s, 4).empty());
 }
 
 }  // namespace
