@@ -320,24 +320,21 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
   const size_t per_view = size_t(std::max(200, 1000 / instants));  // sky samples per view and kind
   for (const auto& v : views) {
     const cv::Mat mask = sky_mask(v);
-    // Linear luminance for the shadow cue.
     cv::Mat g(v.rgb.rows, v.rgb.cols, CV_32F);
-    for (int y = 0; y < v.rgb.rows; ++y)
-      for (int x = 0; x < v.rgb.cols; ++x) g.at<float>(y, x) = luminance(linear_pixel(v, v.rgb.at<cv::Vec3b>(y, x)));
-    gray.push_back(g);
-    cv::Mat b(v.rgb.rows, v.rgb.cols, CV_8U, cv::Scalar(0));
-    for (int y = 0; y < v.rgb.rows; ++y)
-      for (int x = 0; x < v.rgb.cols; ++x)
-        if (pixel_dir(v, x, y).z() < -0.01f) b.at<uchar>(y, x) = 255;
-    below.push_back(b);
-    // A visible sun: a clipped blob (a low sun is orange: one clipped channel is enough) above
-    // the horizon.
-    cv::Mat clipped(v.rgb.rows, v.rgb.cols, CV_8U, cv::Scalar(0));
+    // One pass: linear luminance for the shadow cue, the ground's directions (below the
+    // horizon), and the clipped pixels a visible sun may be (a low sun is orange: one clipped
+    // channel is enough) above it.
+    cv::Mat b(v.rgb.rows, v.rgb.cols, CV_8U, cv::Scalar(0)), clipped(v.rgb.rows, v.rgb.cols, CV_8U, cv::Scalar(0));
     for (int y = 0; y < v.rgb.rows; ++y)
       for (int x = 0; x < v.rgb.cols; ++x) {
         const cv::Vec3b p = v.rgb.at<cv::Vec3b>(y, x);
-        if (std::max({p[0], p[1], p[2]}) >= kClipped && pixel_dir(v, x, y).z() > -0.02f) clipped.at<uchar>(y, x) = 255;
+        g.at<float>(y, x) = luminance(linear_pixel(v, p));
+        const float up = pixel_dir(v, x, y).z();
+        if (up < -0.01f) b.at<uchar>(y, x) = 255;
+        if (std::max({p[0], p[1], p[2]}) >= kClipped && up > -0.02f) clipped.at<uchar>(y, x) = 255;
       }
+    gray.push_back(g);
+    below.push_back(b);
     cv::Mat labels, stats, centroids;
     const int n = cv::connectedComponentsWithStats(clipped, labels, stats, centroids);
     // The sky's typical brightness in this view: the sun's aureole is far above it.
