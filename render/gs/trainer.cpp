@@ -633,16 +633,19 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
         gi[kColor + 4 * c + 1] = dk.x(), gi[kColor + 4 * c + 2] = dk.y(), gi[kColor + 4 * c + 3] = dk.z();
       }
     }
-    // Learning rates: position decays from 1.6e-4 to 1.6e-6 of the scene's extent.
+    // Learning rates: position decays from 1.6e-4 to 1.6e-6 of the scene's extent. The others
+    // are 4 times the earlier ones (for scale, rotation and opacity, 3D Gaussian splatting's,
+    // meant for 30 000 iterations; the presets run 500-6000). On the demo scene at 600
+    // iterations, 4x gave 25.2 dB held out against 23.9 (2x: 25.0, 8x: 24.4).
     const float progress = float(it) / float(iterations);
     float lr[kParamCount];
     const float pos_lr = float(1.6e-4 * extent * std::pow(0.01, progress));
-    for (int k = 0; k < 3; ++k) lr[kPosX + k] = pos_lr, lr[kScaleX + k] = 5e-3f;
-    for (int k = 0; k < 4; ++k) lr[kRotW + k] = 1e-3f;
-    lr[kOpacity] = 2.5e-2f;
+    for (int k = 0; k < 3; ++k) lr[kPosX + k] = pos_lr, lr[kScaleX + k] = 2e-2f;
+    for (int k = 0; k < 4; ++k) lr[kRotW + k] = 4e-3f;
+    lr[kOpacity] = 0.1f;
     for (int c = 0; c < 3; ++c) {
-      lr[kColor + 4 * c] = 1e-2f;
-      for (int k = 1; k < 4; ++k) lr[kColor + 4 * c + k] = 1e-3f;
+      lr[kColor + 4 * c] = 4e-2f;
+      for (int k = 1; k < 4; ++k) lr[kColor + 4 * c + k] = 4e-3f;
     }
     adam.step(model.gaussians.p.data(), g.data(), g.size(), lr, kParamCount, it);
     const float sky_lr = 1e-2f;

@@ -105,7 +105,7 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
     // Baseline: Telea on the 8-bit images with the same masks.
     const auto tb = std::chrono::steady_clock::now();
     std::vector<cv::Mat> base_enc;
-    for (size_t i = 0; i < targets.size(); ++i) {
+    for (size_t i = 0; i < targets.size() && opt.baseline; ++i) {
       cv::Mat enc = encode_srgb8(targets[i].radiance, float(targets[i].exposure)), out;
       cv::inpaint(enc, masks[i], out, 5, cv::INPAINT_TELEA);
       base_enc.push_back(out);
@@ -122,20 +122,20 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
       const cv::Mat plate = read_rgb8(s.dir / pl.path);
       const cv::Mat m = masks[k](pl.rect);
       if (cv::countNonZero(m) < 20) continue;
-      op += psnr(ours_enc[k](pl.rect), plate, m), bp += psnr(base_enc[k](pl.rect), plate, m);
-      os += ssim(ours_enc[k](pl.rect), plate, m), bs += ssim(base_enc[k](pl.rect), plate, m);
+      op += psnr(ours_enc[k](pl.rect), plate, m), os += ssim(ours_enc[k](pl.rect), plate, m);
+      if (opt.baseline) bp += psnr(base_enc[k](pl.rect), plate, m), bs += ssim(base_enc[k](pl.rect), plate, m);
       ++np;
       if (!opt.save_dir.empty()) {
         const fs::path d = fs::path(opt.save_dir) / id;
         const std::string stem = pl.camera + "_" + std::to_string(pl.frame);
         write_rgb8(d / (stem + "_before.png"), encode_srgb8(targets[k].radiance, float(targets[k].exposure)));
         write_rgb8(d / (stem + "_after.png"), ours_enc[k]);
-        write_rgb8(d / (stem + "_telea.png"), base_enc[k]);
+        if (opt.baseline) write_rgb8(d / (stem + "_telea.png"), base_enc[k]);
         write_rgb8(d / (stem + "_plate.png"), plate);
       }
     }
     if (np == 0) continue;
-    const double of = ground_flicker(s, id, ours, ours_enc, dopt), bf = ground_flicker(s, id, targets, base_enc, dopt);
+    const double of = ground_flicker(s, id, ours, ours_enc, dopt), bf = opt.baseline ? ground_flicker(s, id, targets, base_enc, dopt) : 0;
     const double n = double(targets.size());
     per_object.push_back({{"object", id}, {"images", targets.size()}, {"plates", np}, {"psnr", op / np}, {"ssim", os / np},
                           {"baseline_psnr", bp / np}, {"baseline_ssim", bs / np}, {"seconds_per_image", st.seconds / n},
@@ -146,7 +146,7 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
     n_plates += np, n_images += int(targets.size()), ++n_objects;
   }
   if (n_objects == 0) throw std::invalid_argument("no object with a usable clean plate");
-  return {{"objects", per_object},
+  json report = {{"objects", per_object},
           {"summary",
            {{"objects", n_objects}, {"plates", n_plates}, {"psnr", ours_psnr / n_objects}, {"baseline_psnr", base_psnr / n_objects},
             {"psnr_gain_db", (ours_psnr - base_psnr) / n_objects}, {"ssim", ours_ssim / n_objects},
@@ -155,6 +155,14 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
             {"baseline_flicker", base_flicker / n_objects},
             {"behind_the_vehicle", opt.background ? "radiance field" : "2D exemplar inpainting"}}},
           {"targets", {{"psnr_gain_db", 3}, {"seconds_per_image", 0.5}}}};
+  if (!opt.baseline) {
+    // Not measured: no numbers rather than zeros.
+    for (const char* k : {"baseline_psnr", "baseline_ssim", "baseline_seconds_per_image", "baseline_flicker", "psnr_gain_db"})
+      report["summary"].erase(k);
+    for (auto& o : report["objects"])
+      for (const char* k : {"baseline_psnr", "baseline_ssim", "baseline_seconds_per_image", "baseline_flicker"}) o.erase(k);
+  }
+  return report;
 }
 
 json deletion_before_after(const scene::Scene& s, const std::string& prefix) {

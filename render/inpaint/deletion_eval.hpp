@@ -19,6 +19,7 @@ struct DeletionEvalOptions {
   int max_objects = 0;               // 0: no limit (the largest plates first)
   std::string save_dir;              // before / after / baseline / plate images
   BackgroundRenderer background;     // what the ground map cannot fill (the agent's radiance field); empty: 2D inpainting
+  bool baseline = true;              // also run the Telea baseline (false: its fields are left out of the report)
   std::function<void(const std::string&)> progress;  // one line per object, when set
 };
 

@@ -10,7 +10,9 @@
 
 #include "common/scene/camera_model.hpp"
 #include "render/demo/demo_generate.hpp"
+#include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
+#include "render/image_metrics.hpp"
 #include "render/image_io.hpp"
 #include "render/inpaint/deletion_eval.hpp"
 #include "render/light/light_eval.hpp"
@@ -39,6 +41,13 @@ class DemoScene : public ::testing::Test {
     delete dir_;
   }
   static nlohmann::json read(const fs::path& f) { return nlohmann::json::parse(std::ifstream(*dir_ / f)); }
+  // A radiance field of the draft preset, trained for a few iterations: enough to render.
+  static render::gs::RadianceField quick_model(const scene::Scene& s, int iterations) {
+    render::gs::TrainOptions t;
+    t.preset = "draft";
+    t.max_iterations = iterations;
+    return render::gs::train(s, t);
+  }
   static fs::path* dir_;
   static render::demo::DemoReport report_;
 };
@@ -179,10 +188,7 @@ TEST_F(DemoScene, LightEvaluationComparesWithTheGroundTruthSkyAndNamesItWhenMiss
 // are the full render's, and the rest is left zero.
 TEST_F(DemoScene, ARegionRenderIsTheFullRenderThere) {
   const auto s = scene::load_scene(*dir_);
-  render::gs::TrainOptions t;
-  t.preset = "draft";
-  t.max_iterations = 30;
-  const auto model = render::gs::train(s, t);
+  const auto model = quick_model(s, 30);
   const auto& f = s.frames[1];
   const auto* cam = s.camera("front");
   const auto pose = s.camera_to_world(f, *cam);
@@ -206,6 +212,30 @@ TEST_F(DemoScene, ARegionRenderIsTheFullRenderThere) {
   cv::cvtColor(cv::abs(part.radiance), lum, cv::COLOR_RGB2GRAY);
   EXPECT_EQ(cv::countNonZero((lum > 0) & outside), 0);
   EXPECT_GT(cv::countNonZero(lum(roi) > 0), roi.area() / 2);
+}
+
+// The novel-view evaluation also scores the captured held-out images against their noise-free
+// views: what a perfect model would reach on the held-out set.
+TEST_F(DemoScene, NvsEvalReportsWhatAPerfectModelWouldScoreOnTheHeldOutImages) {
+  const auto s = scene::load_scene(*dir_);
+  const auto model = quick_model(s, 10);
+  render::gs::NvsOptions o;
+  o.holdout = 2;  // frames 1 and 3; the fixture's noise-free unshifted views are of frame 1
+  const auto r = render::gs::evaluate_nvs(model, s, o);
+  ASSERT_TRUE(r.contains("held_out_ceiling")) << r.dump(1);
+  double expected = 0;
+  int n = 0;
+  const auto doc = read("ground_truth/views.json");
+  for (const auto& v : doc["views"]) {
+    if (v["shift"] != "none") continue;
+    const auto& f = s.frames[size_t(v["frame"].get<int>())];
+    expected += render::psnr(render::read_rgb8(*dir_ / f.images.at(v["camera"]).path), render::read_rgb8(*dir_ / v["image"].get<std::string>()));
+    ++n;
+  }
+  ASSERT_EQ(n, 3);
+  EXPECT_EQ(r["held_out_ceiling"]["count"].get<int>(), n);
+  EXPECT_NEAR(r["held_out_ceiling"]["psnr"].get<double>(), expected / n, 1e-9);
+  EXPECT_LT(r["held_out_ceiling"]["ssim"].get<double>(), 1.0);  // the captured images are noisy
 }
 
 TEST(DemoSceneDeterminism, SameSeedSameImages) {
@@ -234,11 +264,17 @@ TEST(DemoSceneDeletion, BeatsDiffusionInpaintingAgainstTheCleanPlates) {
   render::inpaint::DeletionEvalOptions o;
   o.max_objects = 3;
   const auto r = render::inpaint::evaluate_deletion(s, o);
+  // Without the baseline (as bench deletion's second pass): the same result, no baseline fields.
+  o.baseline = false;
+  const auto alone = render::inpaint::evaluate_deletion(s, o);
   fs::remove_all(dir);
   const auto& sm = r["summary"];
   ASSERT_GE(sm["objects"].get<int>(), 1);
   EXPECT_GT(sm["psnr"].get<double>(), sm["baseline_psnr"].get<double>()) << r.dump(1);
   EXPECT_LT(sm["flicker"].get<double>(), sm["baseline_flicker"].get<double>()) << r.dump(1);
+  EXPECT_NEAR(alone["summary"]["psnr"].get<double>(), sm["psnr"].get<double>(), 1e-9);
+  EXPECT_FALSE(alone["summary"].contains("baseline_psnr"));
+  EXPECT_FALSE(alone["objects"][0].contains("baseline_flicker"));
 }
 
 }  // namespace
