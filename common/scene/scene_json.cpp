@@ -12,7 +12,7 @@ nlohmann::json read_json_file(const std::filesystem::path& file) {
   if (!in) throw SceneError(file, "", "cannot open the file (does it exist and is it readable?)");
   try {
     return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error and the other errors the parser throws
     throw SceneError(file, "", std::string("not valid JSON: ") + e.what());
   }
 }

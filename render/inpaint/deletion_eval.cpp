@@ -137,32 +137,29 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
     if (np == 0) continue;
     const double of = ground_flicker(s, id, ours, ours_enc, dopt), bf = opt.baseline ? ground_flicker(s, id, targets, base_enc, dopt) : 0;
     const double n = double(targets.size());
-    per_object.push_back({{"object", id}, {"images", targets.size()}, {"plates", np}, {"psnr", op / np}, {"ssim", os / np},
-                          {"baseline_psnr", bp / np}, {"baseline_ssim", bs / np}, {"seconds_per_image", st.seconds / n},
-                          {"baseline_seconds_per_image", base_secs / n}, {"flicker", of}, {"baseline_flicker", bf},
-                          {"ground_seen", st.ground_seen}});
+    json obj{{"object", id}, {"images", targets.size()}, {"plates", np}, {"psnr", op / np}, {"ssim", os / np},
+             {"seconds_per_image", st.seconds / n}, {"flicker", of}, {"ground_seen", st.ground_seen}};
+    // The baseline's fields only where it ran: no numbers rather than zeros.
+    if (opt.baseline)
+      obj.update({{"baseline_psnr", bp / np}, {"baseline_ssim", bs / np}, {"baseline_seconds_per_image", base_secs / n}, {"baseline_flicker", bf}});
+    per_object.push_back(obj);
     ours_psnr += op / np, base_psnr += bp / np, ours_ssim += os / np, base_ssim += bs / np;
     ours_t += st.seconds, base_t += base_secs, ours_flicker += of, base_flicker += bf;
     n_plates += np, n_images += int(targets.size()), ++n_objects;
   }
   if (n_objects == 0) throw std::invalid_argument("no object with a usable clean plate");
-  json report = {{"objects", per_object},
-          {"summary",
-           {{"objects", n_objects}, {"plates", n_plates}, {"psnr", ours_psnr / n_objects}, {"baseline_psnr", base_psnr / n_objects},
-            {"psnr_gain_db", (ours_psnr - base_psnr) / n_objects}, {"ssim", ours_ssim / n_objects},
-            {"baseline_ssim", base_ssim / n_objects}, {"seconds_per_image", ours_t / n_images},
-            {"baseline_seconds_per_image", base_t / n_images}, {"flicker", ours_flicker / n_objects},
-            {"baseline_flicker", base_flicker / n_objects},
-            {"behind_the_vehicle", opt.background ? "radiance field" : "2D exemplar inpainting"}}},
-          {"targets", {{"psnr_gain_db", 3}, {"seconds_per_image", 0.5}}}};
-  if (!opt.baseline) {
-    // Not measured: no numbers rather than zeros.
-    for (const char* k : {"baseline_psnr", "baseline_ssim", "baseline_seconds_per_image", "baseline_flicker", "psnr_gain_db"})
-      report["summary"].erase(k);
-    for (auto& o : report["objects"])
-      for (const char* k : {"baseline_psnr", "baseline_ssim", "baseline_seconds_per_image", "baseline_flicker"}) o.erase(k);
-  }
-  return report;
+  json summary{{"objects", n_objects},
+               {"plates", n_plates},
+               {"psnr", ours_psnr / n_objects},
+               {"ssim", ours_ssim / n_objects},
+               {"seconds_per_image", ours_t / n_images},
+               {"flicker", ours_flicker / n_objects},
+               {"behind_the_vehicle", opt.background ? "radiance field" : "2D exemplar inpainting"}};
+  if (opt.baseline)
+    summary.update({{"baseline_psnr", base_psnr / n_objects}, {"psnr_gain_db", (ours_psnr - base_psnr) / n_objects},
+                    {"baseline_ssim", base_ssim / n_objects}, {"baseline_seconds_per_image", base_t / n_images},
+                    {"baseline_flicker", base_flicker / n_objects}});
+  return {{"objects", per_object}, {"summary", summary}, {"targets", {{"psnr_gain_db", 3}, {"seconds_per_image", 0.5}}}};
 }
 
 json deletion_before_after(const scene::Scene& s, const std::string& prefix) {
