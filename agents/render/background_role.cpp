@@ -32,7 +32,7 @@ std::shared_ptr<const chatsim::render::gs::RadianceField> load_model_cached(cons
 }
 
 fs::path BackgroundRole::model_path(const scene::Scene& s, const std::string& preset) {
-  return scene_cache_dir(s) / ("radiance_field_" + preset + ".csgs");
+  return scene_cache_dir(s) / ("radiance_field_" + preset + "_v" + std::to_string(chatsim::render::gs::kTrainerVersion) + ".csgs");
 }
 
 AgentOutcome BackgroundRole::handle(const AgentCall& call, const RoleProgress& progress) {

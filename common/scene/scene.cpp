@@ -1,6 +1,7 @@
 #include "common/scene/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 
@@ -156,8 +157,43 @@ const ObjectTrack* Scene::object(const std::string& id) const {
 
 Eigen::Isometry3d Scene::camera_to_world(const Frame& frame, const Camera& cam) const {
   const auto it = frame.images.find(cam.name);
-  if (it != frame.images.end() && it->second.camera_to_world) return *it->second.camera_to_world;
+  if (it == frame.images.end()) return frame.ego_to_world * cam.sensor_to_ego;
+  if (it->second.camera_to_world) return *it->second.camera_to_world;
+  // Asynchronous trigger: the rig where the ego was when this camera fired, not at the frame's
+  // time (at 8 m/s, 12 ms is a decimetre).
+  if (std::abs(it->second.timestamp_s - frame.timestamp_s) > 1e-6) return ego_to_world_at(it->second.timestamp_s) * cam.sensor_to_ego;
   return frame.ego_to_world * cam.sensor_to_ego;
+}
+
+Eigen::Isometry3d Scene::ego_to_world_at(double t) const {
+  const auto& fr = frames;
+  if (fr.empty()) return Eigen::Isometry3d::Identity();
+  if (t <= fr.front().timestamp_s) {
+    if (fr.size() < 2) return fr.front().ego_to_world;
+    // Extrapolate backwards along the first step (a camera triggered before frame 0).
+    const auto& a = fr[0];
+    const auto& b = fr[1];
+    const double s = (t - a.timestamp_s) / (b.timestamp_s - a.timestamp_s);
+    Eigen::Isometry3d e = a.ego_to_world;
+    e.translation() += s * (b.ego_to_world.translation() - a.ego_to_world.translation());
+    return e;
+  }
+  for (size_t i = 0; i + 1 < fr.size(); ++i) {
+    if (t > fr[i + 1].timestamp_s) continue;
+    const double s = (t - fr[i].timestamp_s) / (fr[i + 1].timestamp_s - fr[i].timestamp_s);
+    Eigen::Isometry3d e = Eigen::Isometry3d::Identity();
+    e.translation() = fr[i].ego_to_world.translation() * (1 - s) + fr[i + 1].ego_to_world.translation() * s;
+    e.linear() = Eigen::Quaterniond(fr[i].ego_to_world.linear())
+                     .slerp(s, Eigen::Quaterniond(fr[i + 1].ego_to_world.linear()))
+                     .toRotationMatrix();
+    return e;
+  }
+  const auto& a = fr[fr.size() - 2];
+  const auto& b = fr.back();
+  const double s = (t - a.timestamp_s) / (b.timestamp_s - a.timestamp_s);
+  Eigen::Isometry3d e = b.ego_to_world;
+  e.translation() = a.ego_to_world.translation() + s * (b.ego_to_world.translation() - a.ego_to_world.translation());
+  return e;
 }
 
 Eigen::Isometry3d Scene::world_to_ego0() const {

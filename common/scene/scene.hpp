@@ -66,8 +66,12 @@ struct Scene {
 
   const Camera* camera(const std::string& name) const;
   const ObjectTrack* object(const std::string& id) const;
-  // Camera (OpenCV) to world for one image: its own pose if it has one, else ego x rig.
+  // Camera (OpenCV) to world for one image: its own pose if it has one, else the ego pose at
+  // the image's timestamp x rig.
   Eigen::Isometry3d camera_to_world(const Frame& frame, const Camera& camera) const;
+  // The ego pose at time t: interpolated between frames (slerp), extrapolated along the first
+  // or last step outside them.
+  Eigen::Isometry3d ego_to_world_at(double t) const;
   // World to the ego frame at frame 0 (the frame the command cases speak in).
   Eigen::Isometry3d world_to_ego0() const;
   double duration_s() const;

@@ -10,6 +10,7 @@
 #include "common/util/progress.hpp"
 #include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
+#include "processes/cli/train_progress.hpp"
 #include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
 #include "render/image_io.hpp"
@@ -47,12 +48,7 @@ int run_train(const TrainArgs& a) {
   o.pose_refinement = !a.no_pose;
   o.seed = a.seed;
   ProgressBar bar("train");
-  o.progress = [&bar](int it, int total, double loss, double psnr, size_t n) {
-    std::ostringstream what;
-    what << "it " << it << "/" << total << " loss " << std::fixed << std::setprecision(4) << loss << " PSNR "
-         << std::setprecision(1) << psnr << " dB, " << n << " Gaussians";
-    bar.update(double(it) / total, what.str());
-  };
+  o.progress = train_progress(bar);
   try {
     render::gs::TrainReport r;
     const auto model = render::gs::train(s, o, &r);
@@ -174,7 +170,7 @@ void add_radiance_commands(CLI::App& app, int& result) {
                                             "prints a JSON report");
   train->add_option("--scene", ta->scene, "scene directory")->required();
   train->add_option("--out", ta->out, "model file to write")->required();
-  train->add_option("--preset", ta->preset, "draft (a quick look), fast (up to 2000 iterations: 9-18 min on 2 cores) or quality")->check(CLI::IsMember(preset_names()));
+  train->add_option("--preset", ta->preset, "draft (a quick look), fast (up to 1000 iterations: about 9 min on 2 cores) or quality")->check(CLI::IsMember(preset_names()));
   train->add_option("--holdout", ta->holdout, "hold out frames with index % N == N/2 for evaluation (0: none)")->check(CLI::Range(0, 1000));
   train->add_option("--iterations", ta->iterations, "at most this many iterations (default: the preset's)")->check(CLI::Range(1, 1000000));
   train->add_option("--max-width", ta->max_width, "downscale wider images to this width (default: the preset's)")->check(CLI::Range(16, 8192));

@@ -14,6 +14,7 @@
 #include "common/util/exit_codes.hpp"
 #include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
+#include "processes/cli/train_progress.hpp"
 #include "render/gs/model.hpp"
 #include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
@@ -205,14 +206,18 @@ int run_nvs(const NvsArgs& a) {
     o.preset = rest.substr(0, dash);
     if (dash != std::string::npos) o.max_iterations = std::stoi(rest.substr(dash + 1));
     std::cerr << "bench nvs: " << name << "...\n";
+    ProgressBar bar("train " + name);
+    o.progress = train_progress(bar);
     render::gs::TrainReport tr;
     const auto model = render::gs::train(s, o, &tr);
+    bar.finish();
     render::gs::NvsOptions no;
     no.holdout = a.holdout;
     const json ev = render::gs::evaluate_nvs(model, s, no);
     if (ev.contains("held_out_ceiling")) ceiling = ev["held_out_ceiling"];  // the same for every model
     runs.push_back({{"config", name}, {"train_seconds", tr.seconds}, {"iterations", tr.iterations}, {"converged", tr.converged},
                     {"gaussians", tr.gaussians}, {"train_psnr", tr.train_psnr}, {"sets", ev["sets"]}, {"width", ev["width"]}});
+    if (ev.contains("pose_error")) runs.back()["pose_error"] = ev["pose_error"];
     for (const auto& [k, v] : ev["sets"].items())
       std::printf("  %-24s %-26s PSNR %5.2f dB  SSIM %.3f  %.3f s/image\n", name.c_str(), k.c_str(), v["psnr"].get<double>(),
                   v["ssim"].get<double>(), v["render_s"].get<double>());

@@ -167,7 +167,7 @@ DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_d
     RenderSettings s;
     s.spp = 2;
     s.max_depth = 1;
-    const auto v = render_view(world.scene(), world.lighting(), small, ego_at_time(layout, 0) * small.sensor_to_ego, s);
+    const auto v = render_view(world.scene(), world.lighting(), small, layout.ego_to_world_at(0) * small.sensor_to_ego, s);
     std::vector<float> lum;
     for (int y = 0; y < v.radiance.rows; ++y)
       for (int x = 0; x < v.radiance.cols; ++x) {
@@ -213,7 +213,7 @@ DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_d
       const double exposure = report.exposure_s * (size_t(c) < o.exposure_scale.size() ? o.exposure_scale[size_t(c)] : 1.0) *
                               (1 + 0.04 * (2 * trigger_rng.uniform() - 1));
       shot[{f.index, c}] = {t, exposure};
-      const Eigen::Isometry3d c2w = ego_at_time(layout, t) * cam.sensor_to_ego;
+      const Eigen::Isometry3d c2w = layout.ego_to_world_at(t) * cam.sensor_to_ego;
       world.place_objects(t);
       world.commit();
       RenderSettings s;
@@ -277,7 +277,7 @@ DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_d
       for (int c = 0; c < n_cams; ++c) {
         const scene::Camera& cam = rig_true[size_t(c)];
         const auto [t, exposure] = shot[{f.index, c}];
-        const Eigen::Isometry3d ego = ego_at_time(layout, t);
+        const Eigen::Isometry3d ego = layout.ego_to_world_at(t);
         world.place_objects(t);
         world.commit();
         for (const auto& sh : shifts) {

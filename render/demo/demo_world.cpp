@@ -132,37 +132,6 @@ std::optional<scene::TrackPoint> object_at_time(const scene::Scene& layout, cons
   return p1;
 }
 
-Eigen::Isometry3d ego_at_time(const scene::Scene& layout, double t) {
-  const auto& fr = layout.frames;
-  if (fr.empty()) return Eigen::Isometry3d::Identity();
-  if (t <= fr.front().timestamp_s) {
-    if (fr.size() < 2) return fr.front().ego_to_world;
-    // Extrapolate backwards along the first step (a camera triggered before frame 0).
-    const auto& a = fr[0];
-    const auto& b = fr[1];
-    const double s = (t - a.timestamp_s) / (b.timestamp_s - a.timestamp_s);
-    Eigen::Isometry3d e = a.ego_to_world;
-    e.translation() += s * (b.ego_to_world.translation() - a.ego_to_world.translation());
-    return e;
-  }
-  for (size_t i = 0; i + 1 < fr.size(); ++i) {
-    if (t > fr[i + 1].timestamp_s) continue;
-    const double s = (t - fr[i].timestamp_s) / (fr[i + 1].timestamp_s - fr[i].timestamp_s);
-    Eigen::Isometry3d e = Eigen::Isometry3d::Identity();
-    e.translation() = fr[i].ego_to_world.translation() * (1 - s) + fr[i + 1].ego_to_world.translation() * s;
-    e.linear() = Eigen::Quaterniond(fr[i].ego_to_world.linear())
-                     .slerp(s, Eigen::Quaterniond(fr[i + 1].ego_to_world.linear()))
-                     .toRotationMatrix();
-    return e;
-  }
-  const auto& a = fr[fr.size() - 2];
-  const auto& b = fr.back();
-  const double s = (t - a.timestamp_s) / (b.timestamp_s - a.timestamp_s);
-  Eigen::Isometry3d e = b.ego_to_world;
-  e.translation() = a.ego_to_world.translation() + s * (b.ego_to_world.translation() - a.ego_to_world.translation());
-  return e;
-}
-
 DemoWorld::DemoWorld(const scene::Scene& layout, const WorldOptions& o)
     : layout_(layout), o_(o), scene_(std::make_unique<RayScene>()), sky_([&] {
         SkyParams p;

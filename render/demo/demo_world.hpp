@@ -54,7 +54,5 @@ class DemoWorld {
 
 // An object's box centre and yaw at time t, interpolated between its labelled frames.
 std::optional<scene::TrackPoint> object_at_time(const scene::Scene& layout, const scene::ObjectTrack& o, double t);
-// The ego pose at time t, interpolated between frames.
-Eigen::Isometry3d ego_at_time(const scene::Scene& layout, double t);
 
 }  // namespace chatsim::render::demo

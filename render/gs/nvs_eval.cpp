@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "render/gs/pose_error.hpp"
 #include "render/gs/trainer.hpp"
 #include "render/image_io.hpp"
 #include "render/image_metrics.hpp"
@@ -91,6 +92,8 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
   if (ceiling_n > 0)
     report["held_out_ceiling"] = {{"count", ceiling_n}, {"psnr", ceiling_psnr / ceiling_n}, {"ssim", ceiling_ssim / ceiling_n},
                                   {"what", "the captured held-out images against their noise-free ground-truth views: a perfect model's held_out score"}};
+  if (o.ground_truth)
+    if (auto e = evaluate_pose_error(model, s)) report["pose_error"] = std::move(*e);
   return report;
 }
 

@@ -12,13 +12,18 @@
 
 namespace chatsim::render::gs {
 
+// Bumped when a change makes models trained before it wrong for the same scene (2: images
+// start at the ego pose of their own timestamp, so earlier pose corrections no longer fit).
+// Caches of trained models key on it.
+inline constexpr int kTrainerVersion = 2;
+
 struct TrainOptions {
   std::string preset = "fast";      // draft | fast | quality
   int max_iterations = 0;           // 0: the preset's
   int max_width = 0;                // images wider than this are downscaled (0: the preset's)
   bool exposure = true;             // use exposure_s and learn per-image corrections
   bool pose_refinement = true;
-  float pose_start = 0.05f;         // share of the iterations before poses are refined
+  float pose_start = 0.2f;          // share of the iterations before poses are refined
   float coarse_share = 0.3f;        // share of the iterations trained at half resolution
   double depth_weight = 0.1;        // LiDAR depth supervision (relative L1) against the image loss; 0: none
   int holdout = 0;                  // hold out frames with index % holdout == holdout / 2 (0: none)

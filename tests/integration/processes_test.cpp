@@ -10,6 +10,7 @@
 #include "common/util/clock.hpp"
 #include "tests/support/bus_fixture.hpp"
 #include "tests/support/heartbeat_watcher.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "tests/support/subprocess.hpp"
 
 using namespace chatsim;
@@ -55,7 +56,7 @@ TEST(Processes, BadFlagsExitWithUsageCode) {
 }
 
 TEST(Processes, CommandsGivenAMissingSceneExitWithUsageCodeNamingIt) {
-  const auto dir = std::filesystem::temp_directory_path() / ("chatsim-missing-" + std::to_string(::getpid()));
+  const auto dir = chatsim::scratch::dir() / ("chatsim-missing-" + std::to_string(::getpid()));
   const std::string scene = (dir / "no-such-scene").string(), log = (dir / "log.txt").string();
   std::filesystem::create_directories(dir);
   const std::vector<std::vector<std::string>> commands = {

@@ -14,13 +14,15 @@
 #include <thread>
 #include <vector>
 
+#include "tests/support/scratch_dir.hpp"
+
 namespace chatsim::test_support {
 
 inline std::string bin(const std::string& name) { return std::string(CHATSIM_BIN_DIR) + "/" + name; }
 
-// A per-test-process path in the temporary folder (ctest runs tests in parallel).
+// A per-test-process path in the scratch folder.
 inline std::filesystem::path temp_path(const std::string& name) {
-  return std::filesystem::temp_directory_path() /
+  return chatsim::scratch::dir() /
          ("chatsim-test-" + std::to_string(getpid()) + "-" + name);
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "common/scene/scene.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace test_support {
 
@@ -72,7 +73,7 @@ namespace test_support {
 
 // The synthetic scene saved to a fresh temporary directory (for code that reads directories).
 inline std::string temp_dir_for_scene() {
-  const auto dir = std::filesystem::temp_directory_path() /
+  const auto dir = chatsim::scratch::dir() /
                    ("chatsim-synthetic-" + std::to_string(::getpid()) + "-" + std::to_string(std::rand()));
   chatsim::scene::save_scene(synthetic_scene(), dir);
   return dir.string();

@@ -8,6 +8,7 @@
 #include "agents/asset/catalog.hpp"
 #include "agents/foreground/asset_bank.hpp"
 #include "render/asset_model.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace chatsim {
 namespace {
@@ -92,7 +93,7 @@ TEST(AssetBank, KenneyGlbIsNormalisedToOurConvention) {
 }
 
 TEST(AssetBank, ObjWithMaterialsLoadsAndNamedPaintIsUsed) {
-  const fs::path dir = fs::temp_directory_path() / ("chatsim-obj-" + std::to_string(getpid()));
+  const fs::path dir = chatsim::scratch::dir() / ("chatsim-obj-" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "box.mtl") << "newmtl body\nKd 0.8 0.1 0.1\nnewmtl tyre\nKd 0.02 0.02 0.02\n";
   // A 4 x 2 x 1 box, y up, front toward +z as in glTF, with one "tyre" face.
@@ -119,7 +120,7 @@ TEST(AssetBank, ObjWithMaterialsLoadsAndNamedPaintIsUsed) {
 }
 
 TEST(AssetBank, BadFilesAreRefusedNamingTheFile) {
-  const fs::path dir = fs::temp_directory_path() / ("chatsim-badasset-" + std::to_string(getpid()));
+  const fs::path dir = chatsim::scratch::dir() / ("chatsim-badasset-" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "broken.glb") << "this is not a glb";
   for (const fs::path& f : {dir / "broken.glb", dir / "missing.obj", dir / "model.fbx"}) {
@@ -134,7 +135,7 @@ TEST(AssetBank, BadFilesAreRefusedNamingTheFile) {
 }
 
 TEST(AssetCatalog, EntriesAreCheckedAndOverlaysReplaceByName) {
-  const fs::path dir = fs::temp_directory_path() / ("chatsim-catalog-" + std::to_string(getpid()));
+  const fs::path dir = chatsim::scratch::dir() / ("chatsim-catalog-" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "mine.asset.json") << R"({"asset": "sedan", "type": "car", "size_lwh": [4.0, 1.8, 1.4],
       "color_rgb": [1, 2, 3], "model": {"file": "car.glb"}})";

@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "bench/chart.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -20,7 +21,7 @@ int count_colour(const cv::Mat& img, const cv::Vec3b& bgr) {
 }
 
 TEST(Chart, PointsInDecibelsAreDrawnInsideThePlot) {
-  const fs::path file = fs::temp_directory_path() / ("chatsim-chart-" + std::to_string(::getpid()) + ".png");
+  const fs::path file = chatsim::scratch::dir() / ("chatsim-chart-" + std::to_string(::getpid()) + ".png");
   chatsim::bench::write_scatter_png(file, {"t", "s", "PSNR [dB]", false}, {{"a", 1.0, 24.0}, {"b", 2.0, 31.0}});
   const cv::Mat img = cv::imread(file.string());
   fs::remove(file);
@@ -31,7 +32,7 @@ TEST(Chart, PointsInDecibelsAreDrawnInsideThePlot) {
 }
 
 TEST(Chart, StackedBarsShowEverySegment) {
-  const fs::path file = fs::temp_directory_path() / ("chatsim-bars-" + std::to_string(::getpid()) + ".png");
+  const fs::path file = chatsim::scratch::dir() / ("chatsim-bars-" + std::to_string(::getpid()) + ".png");
   chatsim::bench::write_stacked_bars_png(file, "t", "seconds", {{"run", {{"one", 10.0}, {"two", 30.0}}}});
   const cv::Mat img = cv::imread(file.string());
   fs::remove(file);
@@ -42,7 +43,7 @@ TEST(Chart, StackedBarsShowEverySegment) {
 }
 
 TEST(Chart, LongBarLabelsAreNotCoveredByTheBars) {
-  const fs::path file = fs::temp_directory_path() / ("chatsim-labels-" + std::to_string(::getpid()) + ".png");
+  const fs::path file = chatsim::scratch::dir() / ("chatsim-labels-" + std::to_string(::getpid()) + ".png");
   const std::string label = "fast preset, model cached, stage radiance uncompressed (run 2)";
   chatsim::bench::write_stacked_bars_png(file, "t", "seconds", {{label, {{"one", 10.0}}}});
   const cv::Mat img = cv::imread(file.string());

@@ -7,6 +7,7 @@
 
 #include "agents/core/agent_registry.hpp"
 #include "bench/command_grader.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "tests/support/synthetic_scene.hpp"
 
 using namespace chatsim;
@@ -89,7 +90,7 @@ TEST(Commands, DevCasesPassInARotatedAndShiftedWorld) {
   for (auto& l : lanes)
     for (auto& p : l.centerline) p = move * p;
   s.lanes = scene::LaneMap(lanes);
-  const auto moved = fs::temp_directory_path() / ("chatsim-rotated-" + std::to_string(::getpid()));
+  const auto moved = chatsim::scratch::dir() / ("chatsim-rotated-" + std::to_string(::getpid()));
   scene::save_scene(s, moved);
   run_cases(dir / "cases-dev.jsonl", moved);
 }
@@ -97,7 +98,7 @@ TEST(Commands, DevCasesPassInARotatedAndShiftedWorld) {
 // Without a lane map, decisions still come, and what could not be done is said.
 TEST(Commands, NoLaneMapFailsGracefully) {
   auto s = test_support::synthetic_scene(false);
-  const auto dir = fs::temp_directory_path() / ("chatsim-nolanes-" + std::to_string(::getpid()));
+  const auto dir = chatsim::scratch::dir() / ("chatsim-nolanes-" + std::to_string(::getpid()));
   scene::save_scene(s, dir);
   fs::remove(dir / "lanes.json");
   std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");

@@ -10,6 +10,7 @@
 #include "common/bus/endpoint.hpp"
 #include "common/bus/node.hpp"
 #include "common/bus/proxy.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace chatsim;
 using namespace std::chrono_literals;
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct SecureBus {
-  fs::path keys = fs::temp_directory_path() / ("chatsim-curve-" + std::to_string(::getpid()));
+  fs::path keys = chatsim::scratch::dir() / ("chatsim-curve-" + std::to_string(::getpid()));
   std::shared_ptr<zmq::context_t> ctx = std::make_shared<zmq::context_t>(1);
   std::unique_ptr<bus::Proxy> proxy;
   std::atomic<bool> stop{false};
@@ -48,7 +49,7 @@ struct SecureBus {
 }  // namespace
 
 TEST(Curve, KeysRoundTripAndBadKeyFilesAreNamed) {
-  const auto dir = fs::temp_directory_path() / ("chatsim-curve-keys-" + std::to_string(::getpid()));
+  const auto dir = chatsim::scratch::dir() / ("chatsim-curve-keys-" + std::to_string(::getpid()));
   const auto pair = bus::generate_curve_keys();
   bus::write_curve_keys(dir, "x", pair);
   EXPECT_EQ(bus::read_curve_key(dir / "x.pub"), pair.public_key);

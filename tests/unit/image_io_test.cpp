@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "render/image_io.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace chatsim;
 namespace fs = std::filesystem;
@@ -14,7 +15,7 @@ TEST(ImageIo, ExrRoundTripsExactlyWithEitherCompression) {
   cv::RNG rng(7);
   rng.fill(img, cv::RNG::UNIFORM, 0.0f, 4.0f);
   img(cv::Rect(0, 0, 96, 32)).setTo(cv::Scalar(0.5f, 0.25f, 1.0f));  // a flat half that zip shrinks
-  const fs::path dir = fs::temp_directory_path() / ("chatsim-image-io-" + std::to_string(getpid()));
+  const fs::path dir = chatsim::scratch::dir() / ("chatsim-image-io-" + std::to_string(getpid()));
   fs::create_directories(dir);
   render::write_exr(dir / "zip.exr", img);
   render::write_exr(dir / "none.exr", img, render::ExrCompression::None);

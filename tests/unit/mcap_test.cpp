@@ -7,13 +7,14 @@
 #include "common/bag/mcap_reader.hpp"
 #include "common/bag/mcap_writer.hpp"
 #include "common/bag/recorder.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace chatsim::bag;
 namespace fs = std::filesystem;
 
 namespace {
 fs::path temp(const std::string& name) {
-  return fs::temp_directory_path() / ("chatsim-mcap-" + std::to_string(::getpid()) + "-" + name);
+  return chatsim::scratch::dir() / ("chatsim-mcap-" + std::to_string(::getpid()) + "-" + name);
 }
 }  // namespace
 

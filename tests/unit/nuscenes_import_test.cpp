@@ -6,6 +6,7 @@
 
 #include "common/import/nuscenes_import.hpp"
 #include "common/scene/camera_model.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "tests/support/synthetic_scene.hpp"
 
 using namespace chatsim;
@@ -20,7 +21,7 @@ const scene::Scene& imported() {
   static const scene::Scene s = [] {
     import::NuScenesOptions o;
     o.dataroot = dataroot();
-    const auto out = fs::temp_directory_path() / ("chatsim-nuscenes-" + std::to_string(::getpid()));
+    const auto out = chatsim::scratch::dir() / ("chatsim-nuscenes-" + std::to_string(::getpid()));
     import::import_nuscenes(o, out);
     return scene::load_scene(out);  // what we wrote must load and validate
   }();
@@ -121,15 +122,15 @@ TEST(NuScenesImport, UnknownSceneAndCameraAreClearErrors) {
   o.dataroot = dataroot();
   o.scene = "scene-9999";
   try {
-    import::import_nuscenes(o, fs::temp_directory_path() / "chatsim-never");
+    import::import_nuscenes(o, chatsim::scratch::dir() / "chatsim-never");
     FAIL();
   } catch (const import::ImportError& e) {
     EXPECT_NE(std::string(e.what()).find("scene-0916"), std::string::npos) << e.what();  // lists what exists
   }
   o.scene = "scene-0916";
   o.cameras = {"CAM_UPSIDE_DOWN"};
-  EXPECT_THROW(import::import_nuscenes(o, fs::temp_directory_path() / "chatsim-never"), import::ImportError);
+  EXPECT_THROW(import::import_nuscenes(o, chatsim::scratch::dir() / "chatsim-never"), import::ImportError);
   o.dataroot = "/nonexistent";
-  EXPECT_THROW(import::import_nuscenes(o, fs::temp_directory_path() / "chatsim-never"), import::ImportError);
+  EXPECT_THROW(import::import_nuscenes(o, chatsim::scratch::dir() / "chatsim-never"), import::ImportError);
 }
 

@@ -5,12 +5,13 @@
 #include <filesystem>
 
 #include "common/util/path_policy.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using chatsim::PathPolicy;
 namespace fs = std::filesystem;
 
 TEST(PathPolicy, PathsMustStayInsideTheRoots) {
-  const auto base = fs::temp_directory_path() / ("chatsim-paths-" + std::to_string(::getpid()));
+  const auto base = chatsim::scratch::dir() / ("chatsim-paths-" + std::to_string(::getpid()));
   fs::create_directories(base / "scenes" / "a");
   fs::create_directories(base / "secret");
   fs::remove(base / "scenes" / "link");

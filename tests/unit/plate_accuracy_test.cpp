@@ -6,6 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "bench/plate_accuracy.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace chatsim::bench {
 namespace {
@@ -14,7 +15,7 @@ namespace fs = std::filesystem;
 // A 40x30 scene image with a "vehicle" (white block) at (10..19, 10..19), its plate (the road
 // without it), and a second removed vehicle whose plate overlaps a third one's.
 struct PlateScene {
-  fs::path dir = fs::temp_directory_path() / ("plate-accuracy-" + std::to_string(::getpid()));
+  fs::path dir = chatsim::scratch::dir() / ("plate-accuracy-" + std::to_string(::getpid()));
   scene::Scene scene;
   cv::Mat captured{30, 40, CV_8UC3, cv::Scalar(90, 90, 90)};
   PlateScene() {

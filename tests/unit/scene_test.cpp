@@ -6,6 +6,7 @@
 #include "common/scene/camera_model.hpp"
 #include "common/scene/scene.hpp"
 #include "common/scene/scene_summary.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "tests/support/synthetic_scene.hpp"
 
 using namespace chatsim::scene;
@@ -14,7 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path temp_path(const std::string& name) {
-  return fs::temp_directory_path() / ("chatsim-test-" + std::to_string(::getpid()) + "-" + name);
+  return chatsim::scratch::dir() / ("chatsim-test-" + std::to_string(::getpid()) + "-" + name);
 }
 
 fs::path saved_synthetic(const std::string& name) {
@@ -155,4 +156,38 @@ TEST(Scene, LoadsTheSharedLayoutScene) {
   EXPECT_EQ(s.frames.size(), 100u);
   EXPECT_EQ(s.objects.size(), 10u);
   EXPECT_EQ(s.lanes.lanes().size(), 7u);
+}
+
+// A camera that fires 12 ms after its frame sees from where the ego was then, not at the frame.
+TEST(Scene, AnImageTriggeredOffTheFrameTimeIsPosedWhereTheEgoWasWhenItFired) {
+  Scene s;
+  Camera cam;
+  cam.name = "front";
+  cam.sensor_to_ego.translation() = Eigen::Vector3d(1.5, 0, 1.6);
+  s.cameras = {cam};
+  for (int i = 0; i < 3; ++i) {
+    Frame f;
+    f.index = i;
+    f.timestamp_s = 0.1 * i;
+    f.ego_to_world.translation() = Eigen::Vector3d(0.8 * i, 0, 0);  // 8 m/s along x
+    f.ego_to_world.linear() = Eigen::AngleAxisd(0.1 * i, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    ImageRef im;
+    im.path = "images/front/x.jpg";
+    im.timestamp_s = f.timestamp_s + (i == 0 ? -0.012 : i == 1 ? 0.012 : 0.05);
+    f.images["front"] = im;
+    s.frames.push_back(f);
+  }
+  auto ego_x = [&](int frame) { return (s.camera_to_world(s.frames[size_t(frame)], cam) * cam.sensor_to_ego.inverse()).translation().x(); };
+  EXPECT_NEAR(ego_x(1), 0.8 + 0.096, 1e-9);      // between frames 1 and 2
+  EXPECT_NEAR(ego_x(0), -0.096, 1e-9);           // before frame 0: along the first step
+  EXPECT_NEAR(ego_x(2), 1.6 + 0.4, 1e-9);        // after the last frame: along the last step
+  const Eigen::Isometry3d mid = s.ego_to_world_at(0.15);
+  EXPECT_NEAR(Eigen::AngleAxisd(mid.linear()).angle(), 0.15, 1e-9);  // rotation interpolated too
+  // At the frame's own time, and with an image's own pose, nothing is interpolated.
+  s.frames[1].images["front"].timestamp_s = 0.1;
+  EXPECT_TRUE(s.camera_to_world(s.frames[1], cam).isApprox(s.frames[1].ego_to_world * cam.sensor_to_ego));
+  Eigen::Isometry3d own = Eigen::Isometry3d::Identity();
+  own.translation() = Eigen::Vector3d(5, 6, 7);
+  s.frames[0].images["front"].camera_to_world = own;
+  EXPECT_TRUE(s.camera_to_world(s.frames[0], cam).isApprox(own));
 }

@@ -1,0 +1,79 @@
+#include "render/gs/pose_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "common/scene/scene_json.hpp"
+
+namespace chatsim::render::gs {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+Eigen::Isometry3d matrix_of(const json& values) {
+  Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+  for (int k = 0; k < 16; ++k) m.matrix()(k / 4, k % 4) = values.at(size_t(k)).get<double>();
+  return m;
+}
+
+struct Errors {
+  std::vector<double> initial_deg, initial_m, refined_deg, refined_m;
+  void add(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& initial, const Eigen::Isometry3d& refined) {
+    auto rotation_deg = [&](const Eigen::Isometry3d& p) {
+      return Eigen::AngleAxisd(truth.linear().transpose() * p.linear()).angle() * 180.0 / M_PI;
+    };
+    initial_deg.push_back(rotation_deg(initial)), refined_deg.push_back(rotation_deg(refined));
+    initial_m.push_back((initial.translation() - truth.translation()).norm());
+    refined_m.push_back((refined.translation() - truth.translation()).norm());
+  }
+};
+
+const scene::Frame* frame_at(const scene::Scene& s, int index) {
+  for (const auto& f : s.frames)
+    if (f.index == index) return &f;
+  return nullptr;
+}
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+json summary(const Errors& e) {
+  return {{"count", e.refined_m.size()},
+          {"initial", {{"rotation_deg", median(e.initial_deg)}, {"translation_m", median(e.initial_m)}}},
+          {"refined", {{"rotation_deg", median(e.refined_deg)}, {"translation_m", median(e.refined_m)}}}};
+}
+
+}  // namespace
+
+std::optional<json> evaluate_pose_error(const RadianceField& model, const scene::Scene& s) {
+  const fs::path file = s.dir / "ground_truth" / "poses.json";
+  if (!fs::exists(file) || model.image_correction.empty()) return std::nullopt;
+  const json doc = scene::read_json_file(file);
+  std::map<std::string, Errors> per_camera;
+  Errors all;
+  for (const auto& p : doc.at("images")) {
+    const int frame = p.at("frame").get<int>();
+    const std::string camera = p.at("camera").get<std::string>();
+    if (!model.image_correction.count({frame, camera})) continue;  // held out: never refined
+    const Eigen::Isometry3d truth = matrix_of(p.at("camera_to_world_true"));
+    const scene::Frame* f = frame_at(s, frame);
+    const scene::Camera* cam = s.camera(camera);
+    if (f == nullptr || cam == nullptr) continue;
+    const Eigen::Isometry3d initial = s.camera_to_world(*f, *cam);  // where training started
+    const Eigen::Isometry3d refined = model.corrected_pose(s, frame, camera);
+    per_camera[camera].add(truth, initial, refined);
+    all.add(truth, initial, refined);
+  }
+  if (all.refined_m.empty()) return std::nullopt;
+  json cameras = json::object();
+  for (const auto& [name, e] : per_camera) cameras[name] = summary(e);
+  return json{{"cameras", cameras}, {"all", summary(all)},
+              {"what", "median pose error against ground_truth/poses.json over the training images: the scene's pose (where training starts), and after pose refinement"}};
+}
+
+}  // namespace chatsim::render::gs
