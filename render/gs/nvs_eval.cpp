@@ -20,6 +20,7 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
   if (width <= 0 && model.info.contains("resolution")) width = model.info["resolution"][0].get<int>();
   json views = json::array();
   std::map<std::string, std::vector<json>> sets;
+  std::map<fs::path, cv::Mat> captured_held_out;  // read once: scored, then used for the ceiling
   auto evaluate = [&](const std::string& set, const std::string& name, const scene::Camera& cam,
                       const Eigen::Isometry3d& pose, double time, double exposure, const fs::path& truth_file) {
     const scene::Camera c = scaled_camera(cam, width);
@@ -28,6 +29,7 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     cv::Mat truth = read_rgb8(truth_file);
     if (truth.cols != c.width || truth.rows != c.height) cv::resize(truth, truth, cv::Size(c.width, c.height), 0, 0, cv::INTER_AREA);
+    if (set == "held_out") captured_held_out[truth_file] = truth;
     const cv::Mat pred = encode_srgb8(img.radiance, float(exposure));
     if (!o.save_dir.empty()) write_rgb8(fs::path(o.save_dir) / set / (name + ".png"), pred);
     const json r{{"set", set}, {"name", name}, {"psnr", psnr(pred, truth)}, {"ssim", ssim(pred, truth)}, {"render_s", secs}};
@@ -61,12 +63,12 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
         const scene::ImageRef* ref = nullptr;
         for (const auto& f : s.frames)
           if (f.index == v["frame"].get<int>() && f.images.count(cam->name)) ref = &f.images.at(cam->name);
-        if (ref != nullptr) {
+        const auto captured = ref != nullptr ? captured_held_out.find(s.dir / ref->path) : captured_held_out.end();
+        if (captured != captured_held_out.end()) {
           const scene::Camera c = scaled_camera(*cam, width);
-          cv::Mat captured = read_rgb8(s.dir / ref->path), truth = read_rgb8(s.dir / v["image"].get<std::string>());
-          for (cv::Mat* m : {&captured, &truth})
-            if (m->cols != c.width || m->rows != c.height) cv::resize(*m, *m, cv::Size(c.width, c.height), 0, 0, cv::INTER_AREA);
-          ceiling_psnr += psnr(captured, truth), ceiling_ssim += ssim(captured, truth), ++ceiling_n;
+          cv::Mat truth = read_rgb8(s.dir / v["image"].get<std::string>());
+          if (truth.cols != c.width || truth.rows != c.height) cv::resize(truth, truth, cv::Size(c.width, c.height), 0, 0, cv::INTER_AREA);
+          ceiling_psnr += psnr(captured->second, truth), ceiling_ssim += ssim(captured->second, truth), ++ceiling_n;
         }
       }
       Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

@@ -13,12 +13,6 @@ using nlohmann::json;
 
 namespace {
 
-Eigen::Isometry3d matrix_of(const json& values) {
-  Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
-  for (int k = 0; k < 16; ++k) m.matrix()(k / 4, k % 4) = values.at(size_t(k)).get<double>();
-  return m;
-}
-
 struct Errors {
   std::vector<double> initial_deg, initial_m, refined_deg, refined_m;
   void add(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& initial, const Eigen::Isometry3d& refined) {
@@ -54,13 +48,15 @@ std::optional<json> evaluate_pose_error(const RadianceField& model, const scene:
   const fs::path file = s.dir / "ground_truth" / "poses.json";
   if (!fs::exists(file) || model.image_correction.empty()) return std::nullopt;
   const json doc = scene::read_json_file(file);
+  const scene::FieldReader images = scene::FieldReader(file, doc).at("images");
   std::map<std::string, Errors> per_camera;
   Errors all;
-  for (const auto& p : doc.at("images")) {
-    const int frame = p.at("frame").get<int>();
-    const std::string camera = p.at("camera").get<std::string>();
+  for (size_t i = 0; i < images.array_size(); ++i) {
+    const scene::FieldReader p = images.at(i);
+    const int frame = p.at("frame").integer();
+    const std::string camera = p.at("camera").str();
     if (!model.image_correction.count({frame, camera})) continue;  // held out: never refined
-    const Eigen::Isometry3d truth = matrix_of(p.at("camera_to_world_true"));
+    const Eigen::Isometry3d truth = p.at("camera_to_world_true").rigid();
     const scene::Frame* f = frame_at(s, frame);
     const scene::Camera* cam = s.camera(camera);
     if (f == nullptr || cam == nullptr) continue;
