@@ -45,12 +45,16 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       const fs::path f = radiance_file(job.in, im.camera, im.frame);
       if (!fs::exists(f)) return AgentOutcome::failure(ErrorKind::BadRequest, "args.in: no background image " + f.string());
       d.radiance = chatsim::render::read_float_image(f);
+      // A view the field rendered: its ground along a removed car's path is replaced too.
+      if (const fs::path depth = depth_file(job.in, im.camera, im.frame); !im.original && fs::exists(depth))
+        d.rendered_depth = chatsim::render::read_float_image(depth);
       targets.push_back(std::move(d));
     }
     chatsim::render::inpaint::DeletionStats stats;
     std::map<std::pair<int, std::string>, chatsim::render::gs::GsImage> rendered;  // the model's view without the removed objects
     if (!job.removed.empty()) {
-      const auto sources = chatsim::render::inpaint::scene_images(*s);
+      // In the background stage's units (the field's, where there is one).
+      const auto sources = chatsim::render::inpaint::scene_images(*s, model.get());
       // Follow the deleted objects' shadows with the scene's estimated sun.
       chatsim::render::inpaint::DeletionOptions opts;
       const auto light = scene_light(*s);
@@ -62,7 +66,7 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
           // kept, so the depth below needs no second render.
           const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, hidden, opts);
           const auto& b = rendered[{im.frame, im.camera}] = model->render_region(*s, im.cam, im.pose, im.time, hidden, padded_bounds(mask, 2));
-          return b.radiance;
+          return cv::Mat(b.radiance * (model->exposure(*s, im.frame, im.camera) / im.exposure));
         };
       stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
     }

@@ -10,6 +10,7 @@
 #include "agents/render/render_job.hpp"
 #include "agents/render/result_writer.hpp"
 #include "render/image_io.hpp"
+#include "render/inpaint/deletion.hpp"
 #include "common/util/preset_names.hpp"
 
 namespace chatsim::agents::render {
@@ -145,7 +146,8 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
     json last_key = bg_key;
     // Deletion: one request for all frames, so one ground map serves every frame.
     if (!removed.empty()) {
-      const json key{{"after", last_key}, {"removed", removed}};
+      // The fill's version too: a stage filled by older code is not reused.
+      const json key{{"after", last_key}, {"removed", removed}, {"fill_version", chatsim::render::inpaint::kDeletionVersion}};
       RenderJob dj = job;
       dj.in = last;
       dj.removed = removed;

@@ -48,8 +48,53 @@ GsView make_view(const scene::Camera& c, const Eigen::Isometry3d& c2w) {
   return v;
 }
 
+namespace {
+
+// The space an object's box swept along its track, padded, from just above the ground (the
+// road's own Gaussians under a parked car stay).
+class SweptBoxes {
+ public:
+  void add(const scene::ObjectTrack& o) {
+    constexpr float kPad = 0.25f, kAboveGround = 0.15f;
+    for (const auto& tp : o.track) {
+      Box b;
+      b.center = tp.center.cast<float>();
+      b.cos_yaw = float(std::cos(tp.yaw)), b.sin_yaw = float(std::sin(tp.yaw));
+      b.half = Eigen::Vector3f(float(o.size_lwh.x()) / 2 + kPad, float(o.size_lwh.y()) / 2 + kPad, float(o.size_lwh.z()) / 2 + kPad);
+      b.zmin = b.center.z() - float(o.size_lwh.z()) / 2 + kAboveGround;
+      const float r = std::hypot(b.half.x(), b.half.y());
+      lo_ = lo_.cwiseMin(Eigen::Vector3f(b.center.x() - r, b.center.y() - r, b.zmin));
+      hi_ = hi_.cwiseMax(b.center + Eigen::Vector3f(r, r, b.half.z()));
+      boxes_.push_back(b);
+    }
+  }
+  bool contains(const Eigen::Vector3f& p) const {
+    if ((p.array() < lo_.array()).any() || (p.array() > hi_.array()).any()) return false;
+    for (const auto& b : boxes_) {
+      const Eigen::Vector3f d = p - b.center;
+      const float along = b.cos_yaw * d.x() + b.sin_yaw * d.y(), across = -b.sin_yaw * d.x() + b.cos_yaw * d.y();
+      if (std::abs(along) <= b.half.x() && std::abs(across) <= b.half.y() && std::abs(d.z()) <= b.half.z() && p.z() >= b.zmin) return true;
+    }
+    return false;
+  }
+
+ private:
+  struct Box {
+    Eigen::Vector3f center, half;
+    float cos_yaw = 1, sin_yaw = 0, zmin = 0;
+  };
+  std::vector<Box> boxes_;
+  Eigen::Vector3f lo_ = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector3f hi_ = Eigen::Vector3f::Constant(std::numeric_limits<float>::lowest());
+};
+
+}  // namespace
+
 Gaussians RadianceField::placed(const scene::Scene& scene, double t, const std::vector<std::string>& hide,
                                 std::vector<int>* source) const {
+  std::vector<SweptBoxes> swept;
+  for (const auto& id : hide)
+    if (const auto* o = scene.object(id); o != nullptr && !o->track.empty()) swept.emplace_back().add(*o);
   std::vector<std::optional<Eigen::Isometry3f>> pose(objects.size());
   for (size_t k = 0; k < objects.size(); ++k) {
     if (std::find(hide.begin(), hide.end(), objects[k]) != hide.end()) continue;
@@ -62,6 +107,10 @@ Gaussians RadianceField::placed(const scene::Scene& scene, double t, const std::
   for (size_t i = 0; i < gaussians.size(); ++i) {
     const int own = owner[i];
     if (own >= 0 && !pose[size_t(own)]) continue;
+    if (own < 0 && !swept.empty()) {
+      const Eigen::Vector3f p(gaussians.at(i)[kPosX], gaussians.at(i)[kPosY], gaussians.at(i)[kPosZ]);
+      if (std::any_of(swept.begin(), swept.end(), [&](const SweptBoxes& b) { return b.contains(p); })) continue;
+    }
     const size_t j = out.size();
     out.resize(j + 1);
     float* d = out.at(j);

@@ -45,7 +45,10 @@ class RadianceField {
   nlohmann::json info = nlohmann::json::object();  // scene, preset, training statistics
 
   // The Gaussians placed in the world at `time_s` (objects moved along their tracks; objects
-  // without a box at that time, or in `hide`, are left out).
+  // without a box at that time, or in `hide`, are left out). With an object hidden, so is what
+  // the background learned inside the space the object's box swept over its track: a moving
+  // car its own Gaussians did not fully explain leaves ghosts of itself (and its shadow's
+  // darkening, just above the road) smeared along its path.
   Gaussians placed(const scene::Scene& scene, double time_s, const std::vector<std::string>& hide = {},
                    std::vector<int>* source = nullptr) const;
 

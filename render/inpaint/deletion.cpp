@@ -12,6 +12,7 @@
 #include "render/gs/model.hpp"
 #include "render/image_io.hpp"
 #include "render/inpaint/exemplar_inpaint.hpp"
+#include "render/inpaint/seam_blend.hpp"
 
 namespace chatsim::render::inpaint {
 namespace {
@@ -73,12 +74,72 @@ struct GroundMap {
   cv::Mat radiance;  // CV_32FC3
   cv::Mat seen;      // CV_8UC1
   cv::Mat valid;     // CV_8UC1: seen, or filled from what was seen
-  bool contains(double x, double y) const {
+  cv::Mat path;      // CV_8UC1: the ground the object and its shadow covered at some time
+  bool contains(double x, double y) const { return at(valid, x, y); }
+  bool on_path(double x, double y) const { return at(path, x, y) && contains(x, y); }
+
+ private:
+  bool at(const cv::Mat& cells, double x, double y) const {
     const double u = (x - x0) / res, v = (y - y0) / res;
-    return u >= 0 && v >= 0 && u < radiance.cols - 1 && v < radiance.rows - 1 &&
-           valid.at<uchar>(int(v + 0.5), int(u + 0.5)) != 0;
+    return u >= 0 && v >= 0 && u < radiance.cols - 1 && v < radiance.rows - 1 && cells.at<uchar>(int(v + 0.5), int(u + 0.5)) != 0;
   }
 };
+
+// Where an object itself stands (its box, barely padded, no shadow).
+DeletionOptions tight_outline(DeletionOptions o) {
+  o.margin_m = 0.2;
+  o.sun_direction.reset();
+  return o;
+}
+
+// Marks the pixels of a rendered view, not yet masked, whose surface is the ground on a deleted
+// object's path (the field's depth agrees with the ground there), as that object's. Small islands
+// inside that ground where the depth disagrees are the field's floaters along the path (what it
+// learned of the moving object near the road), not something standing there: they go too. A
+// labelled object that stays (`keep`) is never painted over, even where its foot is as far as
+// the ground behind it.
+void add_path_pixels(const DeletionImage& im, const std::vector<GroundMap>& maps, const cv::Mat& keep, cv::Mat& mask, cv::Mat& owner) {
+  const Eigen::Matrix3d R = im.pose.linear();
+  const Eigen::Vector3d C = im.pose.translation();
+  cv::Mat on_path(mask.size(), CV_8U, cv::Scalar(0)), agrees(mask.size(), CV_8U, cv::Scalar(0));
+  cv::Mat path_owner(mask.size(), CV_32S, cv::Scalar(-1));
+  for (int y = 0; y < mask.rows; ++y)
+    for (int x = 0; x < mask.cols; ++x) {
+      if (mask.at<uchar>(y, x)) continue;
+      // A ray with unit camera z: the distance along it to the ground is the ground's z-depth.
+      const Eigen::Vector3d d = R * Eigen::Vector3d((x - im.cam.cx) / im.cam.fx, (y - im.cam.cy) / im.cam.fy, 1);
+      if (d.z() > -1e-6) continue;
+      const float z = im.rendered_depth.at<float>(y, x);
+      for (size_t m = 0; m < maps.size(); ++m) {
+        const double t = (maps[m].z - C.z()) / d.z();
+        if (t <= 0) continue;
+        const Eigen::Vector3d p = C + t * d;
+        if (!maps[m].on_path(p.x(), p.y())) continue;
+        on_path.at<uchar>(y, x) = 255;
+        path_owner.at<int>(y, x) = int(m);
+        if (std::isfinite(z) && std::abs(t - z) <= 0.05 * t + 0.3) agrees.at<uchar>(y, x) = 255;
+        break;
+      }
+    }
+  cv::Mat islands = on_path & ~agrees & ~keep, labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(islands, labels, stats, centroids, 8, CV_32S);
+  // An island touches something off the path (or kept) when it does not lie inside the path.
+  std::vector<uint8_t> enclosed(size_t(n), 1);
+  cv::Mat beyond;
+  cv::dilate(~on_path | keep | mask, beyond, cv::Mat());
+  for (int y = 0; y < mask.rows; ++y)
+    for (int x = 0; x < mask.cols; ++x)
+      if (const int l = labels.at<int>(y, x); l > 0 && beyond.at<uchar>(y, x)) enclosed[size_t(l)] = 0;
+  const int max_area = mask.rows * mask.cols / 50;
+  for (int y = 0; y < mask.rows; ++y)
+    for (int x = 0; x < mask.cols; ++x) {
+      const int l = labels.at<int>(y, x);
+      const bool island = l > 0 && enclosed[size_t(l)] && stats.at<int>(l, cv::CC_STAT_AREA) <= max_area;
+      if ((!agrees.at<uchar>(y, x) && !island) || keep.at<uchar>(y, x)) continue;
+      mask.at<uchar>(y, x) = 255;
+      owner.at<int>(y, x) = path_owner.at<int>(y, x);
+    }
+}
 
 // Distance along a ray to where it enters an oriented box (nullopt: it misses).
 std::optional<double> ray_box_entry(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, const scene::TrackPoint& p,
@@ -181,12 +242,12 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
   // through a car); the deleted ones also with their shadows.
   std::vector<std::string> all_ids;
   for (const auto& obj : s.objects) all_ids.push_back(obj.id);
+  std::vector<std::string> others;
+  for (const auto& id : all_ids)
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) others.push_back(id);
   std::vector<cv::Mat> occluded(sources.size());
   for (size_t i = 0; i < sources.size(); ++i) {
-    DeletionOptions tight = o;
-    tight.margin_m = 0.2;
-    tight.sun_direction.reset();
-    occluded[i] = deletion_mask(s, sources[i], all_ids, tight) | deletion_mask(s, sources[i], ids, o);
+    occluded[i] = deletion_mask(s, sources[i], all_ids, tight_outline(o)) | deletion_mask(s, sources[i], ids, o);
   }
   // One ground map per deleted object, over its whole track.
   std::vector<GroundMap> maps;
@@ -209,6 +270,16 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
     const int w = std::max(2, int(std::ceil((xmax - xmin) / gm.res))), h = std::max(2, int(std::ceil((ymax - ymin) / gm.res)));
     gm.radiance = cv::Mat(h, w, CV_32FC3, cv::Scalar::all(0));
     gm.seen = cv::Mat(h, w, CV_8U, cv::Scalar(0));
+    gm.path = cv::Mat(h, w, CV_8U, cv::Scalar(0));
+    for (const auto& tp : obj->track) {
+      std::vector<cv::Point2f> cells;
+      for (const auto& c : ground_outline(tp, obj->size_lwh, o)) cells.emplace_back(float((c.x() - xmin) / gm.res), float((c.y() - ymin) / gm.res));
+      std::vector<cv::Point2f> hull_f;
+      cv::convexHull(cells, hull_f);
+      std::vector<cv::Point> hull;
+      for (const auto& q : hull_f) hull.emplace_back(int(std::lround(q.x)), int(std::lround(q.y)));
+      cv::fillConvexPoly(gm.path, hull, 255);
+    }
     std::vector<std::vector<std::pair<float, cv::Vec3f>>> samples(size_t(w) * size_t(h));
     for (size_t i = 0; i < sources.size(); ++i) {
       const DeletionImage& im = sources[i];
@@ -275,6 +346,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
       mask |= mk;
       ++m;
     }
+    if (!im.rendered_depth.empty()) add_path_pixels(im, maps, deletion_mask(s, im, others, tight_outline(o)), mask, owner);
     if (cv::countNonZero(mask) == 0) continue;
     ++stats.images_edited;
     cv::Mat filled = im.radiance.clone();
@@ -302,7 +374,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
       }
     stats.fallback_pixels += cv::countNonZero(fallback);
     if (cv::countNonZero(fallback) > 0) {
-      cv::Mat bg = background ? background(im, ids) : cv::Mat();
+      const cv::Mat bg = background ? background(im, ids) : cv::Mat();
       if (!bg.empty()) {
         bg.copyTo(filled, fallback);
       } else {
@@ -318,6 +390,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
         sq.copyTo(filled(roi), hole);
       }
     }
+    harmonize_fill(filled, im.radiance, mask);
     // Feathered seam: blend over a few pixels outside the mask.
     cv::Mat alpha;
     mask.convertTo(alpha, CV_32F, 1.0 / 255);
@@ -346,11 +419,14 @@ BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model
     cv::Rect roi = cv::boundingRect(deletion_mask(s, im, hidden, o));
     if (roi.empty()) return cv::Mat(im.cam.height, im.cam.width, CV_32FC3, cv::Scalar::all(0));
     roi = cv::Rect(roi.x - 2, roi.y - 2, roi.width + 4, roi.height + 4);
-    return model->render_region(s, im.cam, im.pose, im.time, hidden, roi).radiance;
+    // In the image's own units: a captured image divided by its recorded exposure differs from
+    // the field's by the exposure correction the field learned for it.
+    const double scale = model->exposure(s, im.frame, im.camera) / im.exposure;
+    return cv::Mat(model->render_region(s, im.cam, im.pose, im.time, hidden, roi).radiance * scale);
   };
 }
 
-std::vector<DeletionImage> scene_images(const scene::Scene& s) {
+std::vector<DeletionImage> scene_images(const scene::Scene& s, const gs::RadianceField* field) {
   std::vector<DeletionImage> out;
   for (const auto& f : s.frames)
     for (const auto& [name, ref] : f.images) {
@@ -362,7 +438,7 @@ std::vector<DeletionImage> scene_images(const scene::Scene& s) {
       im.cam = *cam;
       im.pose = s.camera_to_world(f, *cam);
       im.time = ref.timestamp_s;
-      im.exposure = ref.exposure_s.value_or(1.0);
+      im.exposure = field ? field->exposure(s, f.index, name) : ref.exposure_s.value_or(1.0);
       im.radiance = decode_srgb8(read_rgb8(s.dir / ref.path)) / im.exposure;
       out.push_back(std::move(im));
     }

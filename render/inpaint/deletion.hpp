@@ -6,7 +6,8 @@
 // markings and kerbs continue straight in that view), and every image takes its fill from the
 // one map, so the fill cannot flicker from frame to frame. Pixels whose rays do not end on that
 // ground (what stood behind the object) come from a renderer without the object when one is
-// given, else from 2D inpainting; the seam is feathered.
+// given, else from 2D inpainting. The fill's level is matched to the image around it
+// (seam_blend.hpp) and the seam is feathered.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -24,6 +25,11 @@ class RadianceField;
 
 namespace chatsim::render::inpaint {
 
+// Raised when what a deletion fills with changes (cached deletion stages key on it).
+// 2: the fill's level matched to its surroundings; a rendered view's whole path of a removed
+// car cleared; the field's render in the image's own exposure.
+inline constexpr int kDeletionVersion = 2;
+
 struct DeletionImage {
   int frame = 0;
   std::string camera;
@@ -32,6 +38,10 @@ struct DeletionImage {
   double time = 0;
   double exposure = 1;
   cv::Mat radiance;      // CV_32FC3, linear scene radiance (pixel linear value / exposure)
+  // A view the radiance field rendered (not a captured image): its z-depth (CV_32FC1, m). The
+  // field learned a moving object's shadow smeared along the object's whole path, so there the
+  // ground under that path is replaced too, not only the object's outline at this time.
+  cv::Mat rendered_depth;
 };
 
 struct DeletionOptions {
@@ -43,7 +53,8 @@ struct DeletionOptions {
   int box_pad_px = 4;
 };
 
-// Renders an image's view without the deleted objects (the radiance field); may be empty.
+// Renders an image's view without the deleted objects (the radiance field), in the image's own
+// units (its radiance x its exposure is the pixel); may be empty.
 using BackgroundRenderer = std::function<cv::Mat(const DeletionImage&, const std::vector<std::string>& hidden)>;
 
 struct DeletionStats {
@@ -68,7 +79,9 @@ DeletionStats delete_objects(const scene::Scene& scene, const std::vector<std::s
 BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model, const scene::Scene& scene,
                                   const DeletionOptions& options = {});
 
-// A scene's captured images as deletion inputs (linear radiance at the recorded poses).
-std::vector<DeletionImage> scene_images(const scene::Scene& scene);
+// A scene's captured images as deletion inputs (linear radiance at the recorded poses). With a
+// radiance field, in its units: each image divided by the exposure the field learned for it
+// (as the background stage's images are), else by its recorded exposure_s.
+std::vector<DeletionImage> scene_images(const scene::Scene& scene, const gs::RadianceField* field = nullptr);
 
 }  // namespace chatsim::render::inpaint
