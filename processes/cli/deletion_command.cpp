@@ -8,6 +8,7 @@
 #include "processes/cli/commands.hpp"
 #include "render/gs/model.hpp"
 #include "render/inpaint/deletion_eval.hpp"
+#include "render/inpaint/moved_view_eval.hpp"
 
 namespace chatsim::cli {
 namespace {
@@ -16,11 +17,20 @@ struct EvalDeletionArgs {
   std::string scene, out, save, model;
   std::vector<std::string> objects;
   int max_objects = 0;
+  bool moved_views = false;
 };
 
 int run_eval_deletion(const EvalDeletionArgs& a) {
   return exit_code_of([&] {
     const auto s = scene::load_scene(a.scene);
+    if (a.moved_views) {
+      if (a.model.empty()) throw std::invalid_argument("--moved-views needs --model: the views are the radiance field's renders");
+      const auto r = render::inpaint::evaluate_moved_view_deletion(
+          s, std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.model)), a.save);
+      if (!a.out.empty()) std::ofstream(a.out) << r.dump(1) << "\n";
+      std::cout << r.dump(1) << "\n";
+      return exit_code::kOk;
+    }
     render::inpaint::DeletionEvalOptions o;
     o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
     o.objects = a.objects;
@@ -52,6 +62,9 @@ void add_eval_deletion_command(CLI::App& eval, int& result) {
   cmd->add_option("--model", a->model,
                   "a radiance field of this scene (chatsim train): fill what the ground map cannot from it, as the deletion "
                   "agent does (default: 2D inpainting)")->check(CLI::ExistingFile);
+  cmd->add_flag("--moved-views", a->moved_views,
+               "instead: remove every vehicle from the field's renders of the shifted ground-truth views (as in a moved view) "
+               "and score against the truth where the deletion changed the render (needs --model)");
   cmd->callback([a, &result] { result = run_eval_deletion(*a); });
 }
 

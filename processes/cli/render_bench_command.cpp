@@ -19,6 +19,7 @@
 #include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
 #include "render/inpaint/deletion_eval.hpp"
+#include "render/inpaint/moved_view_eval.hpp"
 #include "render/light/light_eval.hpp"
 
 namespace chatsim::cli {
@@ -108,10 +109,13 @@ int run_deletion(const DeletionArgs& a) {
   json r = render::inpaint::evaluate_deletion(s, o);
   if (!a.model.empty()) {
     // What the deletion agent does: the radiance field fills what the ground map cannot.
-    o.background = render::inpaint::field_renderer(std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.model)), s);
+    const auto model = std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.model));
+    o.background = render::inpaint::field_renderer(model, s);
     o.save_dir = a.save.empty() ? "" : a.save + "/with-field";
     o.baseline = false;  // measured once above, on the same masks
     r["with_field"] = render::inpaint::evaluate_deletion(s, o)["summary"];
+    // And in the views the field renders (a moved view), against the shifted truth views.
+    r["moved_views"] = render::inpaint::evaluate_moved_view_deletion(s, model, a.save.empty() ? "" : a.save + "/moved-views")["summary"];
   }
   if (!a.pair_scene.empty()) {
     // A real capture has no clean plates: a before / after pair beside the report instead.
@@ -134,6 +138,21 @@ int run_deletion(const DeletionArgs& a) {
                 f["ssim"].get<double>(), f["seconds_per_image"].get<double>(), f["flicker"].get<double>());
   }
   bench::write_scatter_png(png, {"Deletion inside the mask vs clean plates", "seconds per image", "PSNR in the mask [dB]", true}, pts);
+  if (r.contains("moved_views") && r["moved_views"].contains("psnr_agent")) {
+    const auto& m = r["moved_views"];
+    fs::path moved_png(a.out);
+    moved_png.replace_filename(moved_png.stem().string() + "-moved-views.png");
+    bench::write_scatter_png(moved_png,
+                             {"Deletion in moved views vs shifted truth (where a fill changed the render)", "seconds per image",
+                              "PSNR [dB]", false},
+                             {{"the field's render, nothing removed", 0.0, m["psnr_field"]},
+                              {"outlines only", m["seconds_per_image_outline_only"], m["psnr_outline_only"]},
+                              {"+ whole paths", m["seconds_per_image_path_ungated"], m["psnr_path_ungated"]},
+                              {"+ paths where they differ (the agent)", m["seconds_per_image_agent"], m["psnr_agent"]}});
+    std::printf("deletion in moved views (%d views, %ld pixels): field %.2f dB, outlines only %.2f, whole paths %.2f, the agent %.2f\n",
+                m["scored_views"].get<int>(), m["scored_pixels"].get<long>(), m["psnr_field"].get<double>(),
+                m["psnr_outline_only"].get<double>(), m["psnr_path_ungated"].get<double>(), m["psnr_agent"].get<double>());
+  }
   std::printf("deletion: PSNR %.2f dB (Telea %.2f dB), %.2f s per image (Telea %.2f s), flicker %.2f (Telea %.2f)\n",
               sm["psnr"].get<double>(), sm["baseline_psnr"].get<double>(), sm["seconds_per_image"].get<double>(),
               sm["baseline_seconds_per_image"].get<double>(), sm["flicker"].get<double>(), sm["baseline_flicker"].get<double>());

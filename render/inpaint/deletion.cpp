@@ -141,6 +141,39 @@ void add_path_pixels(const DeletionImage& im, const std::vector<GroundMap>& maps
     }
 }
 
+// Along a removed car's path in a rendered view, the ground map replaces the field's render only
+// where the two differ by more than softness and the captures' noise do (the smeared shadow,
+// ghosts, in brightness or in colour): elsewhere the field's smooth render is the closer of the
+// two (measured on the demo's shifted truth views, `eval deletion --moved-views`). Those pixels
+// leave the mask.
+void keep_unghosted_ground(const cv::Mat& render, const cv::Mat& path, double min_log_step, cv::Mat& filled, cv::Mat& mask) {
+  constexpr double kSigmaPx = 3;
+  cv::Mat w;
+  path.convertTo(w, CV_32F, 1.0 / 255);
+  cv::Mat wb;
+  cv::GaussianBlur(w, wb, cv::Size(0, 0), kSigmaPx);
+  cv::Mat w3;
+  cv::merge(std::vector<cv::Mat>{w, w, w}, w3);
+  cv::Mat wb3;
+  cv::merge(std::vector<cv::Mat>{wb, wb, wb}, wb3);
+  // Per channel: the log radiance, smoothed over the path only.
+  const auto level = [&](const cv::Mat& rgb) {
+    cv::Mat lg, out;
+    cv::log(cv::max(rgb, 1e-4), lg);
+    cv::GaussianBlur(lg.mul(w3), out, cv::Size(0, 0), kSigmaPx);
+    return cv::Mat(out / cv::max(wb3, 1e-6));
+  };
+  const cv::Mat a = level(render), b = level(filled);
+  for (int y = 0; y < path.rows; ++y)
+    for (int x = 0; x < path.cols; ++x) {
+      if (!path.at<uchar>(y, x)) continue;
+      const cv::Vec3f d = a.at<cv::Vec3f>(y, x) - b.at<cv::Vec3f>(y, x);
+      if (std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}) >= min_log_step) continue;
+      mask.at<uchar>(y, x) = 0;
+      filled.at<cv::Vec3f>(y, x) = render.at<cv::Vec3f>(y, x);
+    }
+}
+
 // Distance along a ray to where it enters an oriented box (nullopt: it misses).
 std::optional<double> ray_box_entry(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, const scene::TrackPoint& p,
                                     const Eigen::Vector3d& size) {
@@ -346,6 +379,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
       mask |= mk;
       ++m;
     }
+    const cv::Mat outlines = mask.clone();
     if (!im.rendered_depth.empty()) add_path_pixels(im, maps, deletion_mask(s, im, others, tight_outline(o)), mask, owner);
     if (cv::countNonZero(mask) == 0) continue;
     ++stats.images_edited;
@@ -372,6 +406,8 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
         }
         if (!done) fallback.at<uchar>(y, x) = 255;
       }
+    if (const cv::Mat path = mask & ~outlines; o.path_min_log_step > 0 && cv::countNonZero(path) > 0)
+      keep_unghosted_ground(im.radiance, path, o.path_min_log_step, filled, mask);
     stats.fallback_pixels += cv::countNonZero(fallback);
     if (cv::countNonZero(fallback) > 0) {
       const cv::Mat bg = background ? background(im, ids) : cv::Mat();

@@ -51,6 +51,10 @@ struct DeletionOptions {
   std::optional<Eigen::Vector3d> sun_direction;  // to follow the shadow (world, toward the sun)
   int feather_px = 3;
   int box_pad_px = 4;
+  // A rendered view's ground along a removed car's path is replaced where the field's render
+  // and the ground map differ by more than this (|log| of their smoothed radiance, in any
+  // channel); 0: all of it.
+  double path_min_log_step = 0.15;
 };
 
 // Renders an image's view without the deleted objects (the radiance field), in the image's own

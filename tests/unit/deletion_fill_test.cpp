@@ -94,7 +94,7 @@ struct Street {
 
   // A frame's image: grey road, bright sky; `ghost` darkens the road in the middle of the
   // car's path, as a field darkens where the car's shadow passed (not where the car is now).
-  DeletionImage image(int frame, bool ghost) const {
+  DeletionImage image(int frame, bool ghost, float road = 0.2f) const {
     DeletionImage im;
     im.frame = frame, im.camera = "front", im.cam = cam, im.pose = pose(), im.time = 0.1 * frame;
     im.radiance = cv::Mat(cam.height, cam.width, CV_32FC3, cv::Scalar::all(0.5));
@@ -102,7 +102,7 @@ struct Street {
       for (int x = 0; x < cam.width; ++x)
         if (const auto g = ground_at(x, y)) {
           const bool dark = ghost && g->x() > 11 && g->x() < 13 && g->y() > -1 && g->y() < 1.5;
-          im.radiance.at<cv::Vec3f>(y, x) = cv::Vec3f::all(dark ? 0.05f : 0.2f);
+          im.radiance.at<cv::Vec3f>(y, x) = cv::Vec3f::all(dark ? 0.05f : road);
         }
     return im;
   }
@@ -124,7 +124,8 @@ float mean_in(const cv::Mat& radiance, const cv::Mat& where) { return float(cv::
 TEST(DeletionPath, ARenderedViewLosesTheGhostAlongARemovedCarsPathACapturedViewKeepsIt) {
   const Street st;
   std::vector<DeletionImage> sources;
-  for (int f = 0; f < 3; ++f) sources.push_back(st.image(f, false));  // the captured views: clean road
+  // The captured views: clean road, a little brighter than the field renders it.
+  for (int f = 0; f < 3; ++f) sources.push_back(st.image(f, false, 0.21f));
   render::inpaint::DeletionOptions cone_only;
   cone_only.margin_m = 0, cone_only.box_pad_px = 0;
   DeletionImage rendered = st.image(0, true);
@@ -145,10 +146,22 @@ TEST(DeletionPath, ARenderedViewLosesTheGhostAlongARemovedCarsPathACapturedViewK
   ASSERT_GT(cv::countNonZero(dark), 30);
   ASSERT_GT(cv::countNonZero(ghost), 30) << "the ghost must show beyond the car's outline for the test to mean anything";
 
+  // Path ground the field already shows right (no ghost), away from the car's outline now.
+  cv::Mat clean_path(green.size(), CV_8U, cv::Scalar(0));
+  for (int y = 0; y < clean_path.rows; ++y)
+    for (int x = 0; x < clean_path.cols; ++x)
+      if (const auto g = st.ground_at(x, y); g && g->x() > 11.2 && g->x() < 12.8 && g->y() > -2.4 && g->y() < -1.4) clean_path.at<uchar>(y, x) = 255;
+  clean_path &= ~car_now;
+  ASSERT_GT(cv::countNonZero(clean_path), 30);
+  const cv::Mat rendered_before = rendered.radiance.clone();
+
   std::vector<DeletionImage> targets{rendered, captured};
   render::inpaint::delete_objects(st.scene, {"car"}, targets, sources);
   EXPECT_NEAR(mean_in(targets[0].radiance, ghost), 0.2f, 0.02f) << "rendered: the path's ground comes from the clean views";
   EXPECT_NEAR(mean_in(targets[0].radiance, cone), 0.9f, 0.01f) << "the cone on the path stays";
+  cv::Mat moved;
+  cv::extractChannel(cv::abs(targets[0].radiance - rendered_before), moved, 1);
+  EXPECT_EQ(cv::countNonZero((moved > 1e-6f) & clean_path), 0) << "path ground the field already shows right is left as rendered";
   EXPECT_NEAR(mean_in(targets[1].radiance, ghost), 0.05f, 0.01f) << "captured: a dark patch there is real, and stays";
 }
 

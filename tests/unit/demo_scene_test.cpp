@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -17,6 +18,7 @@
 #include "render/image_io.hpp"
 #include "render/image_metrics.hpp"
 #include "render/inpaint/deletion_eval.hpp"
+#include "render/inpaint/moved_view_eval.hpp"
 #include "render/light/light_eval.hpp"
 #include "tests/support/scratch_dir.hpp"
 
@@ -215,6 +217,40 @@ TEST_F(DemoScene, ARegionRenderIsTheFullRenderThere) {
   cv::cvtColor(cv::abs(part.radiance), lum, cv::COLOR_RGB2GRAY);
   EXPECT_EQ(cv::countNonZero((lum > 0) & outside), 0);
   EXPECT_GT(cv::countNonZero(lum(roi) > 0), roi.area() / 2);
+}
+
+// Deletion in the field's renders of the shifted truth views: every shifted view is taken, a
+// view with enough changed pixels gets every fill's score, and a scene without those views is
+// refused naming the file. (At 96x64 most changes lie inside the vehicles' own outlines, so
+// few views are scored here; the benchmark measures it at full size.)
+TEST_F(DemoScene, MovedViewDeletionScoresEveryFillOnTheShiftedTruthViews) {
+  const auto s = scene::load_scene(*dir_);
+  const auto model = std::make_shared<render::gs::RadianceField>(quick_model(s, 30));
+  const auto r = render::inpaint::evaluate_moved_view_deletion(s, model);
+  const auto views = read("ground_truth/views.json")["views"];
+  const auto shifted = std::count_if(views.begin(), views.end(), [](const nlohmann::json& v) { return v["shift"] != "none"; });
+  EXPECT_EQ(r["summary"]["views"].get<long>(), shifted);
+  ASSERT_EQ(long(r["views"].size()), shifted);
+  long pixels = 0;
+  for (const auto& v : r["views"]) {
+    pixels += v["pixels"].get<long>();
+    const bool scored = v["pixels"].get<int>() >= 50;
+    for (const char* k : {"psnr_field", "psnr_outline_only", "psnr_path_ungated", "psnr_agent"}) {
+      EXPECT_EQ(v.contains(k), scored) << v.dump();
+      if (scored) {
+        EXPECT_TRUE(std::isfinite(v[k].get<double>())) << v.dump();
+      }
+    }
+  }
+  EXPECT_GT(pixels, 0) << "the deletion changed no pixel outside the vehicles' outlines in any view";
+  scene::Scene bare = s;
+  bare.dir = chatsim::scratch::dir() / "no-truth-views";
+  try {
+    render::inpaint::evaluate_moved_view_deletion(bare, model);
+    FAIL() << "a scene without shifted truth views must be refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("views.json"), std::string::npos) << e.what();
+  }
 }
 
 // The novel-view evaluation also scores the captured held-out images against their noise-free
