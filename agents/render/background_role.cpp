@@ -91,7 +91,7 @@ AgentOutcome BackgroundRole::render(const AgentCall& call) {
   for (const auto& im : images) {
     cv::Mat radiance, depth;
     double exposure = 1.0;
-    const auto& frame = *std::find_if(s->frames.begin(), s->frames.end(), [&](const auto& f) { return f.index == im.frame; });
+    const auto& frame = *s->frame(im.frame);  // view_images yields only the scene's frames
     const auto it = frame.images.find(im.camera);
     if (it != frame.images.end() && it->second.exposure_s) exposure = *it->second.exposure_s;
     if (model) exposure = model->exposure(*s, im.frame, im.camera);

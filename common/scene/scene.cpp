@@ -149,6 +149,12 @@ const Camera* Scene::camera(const std::string& n) const {
   return nullptr;
 }
 
+const Frame* Scene::frame(int index) const {
+  for (const auto& f : frames)
+    if (f.index == index) return &f;
+  return nullptr;
+}
+
 const ObjectTrack* Scene::object(const std::string& id) const {
   for (const auto& o : objects)
     if (o.id == id) return &o;

@@ -65,6 +65,7 @@ struct Scene {
   LaneMap lanes;
 
   const Camera* camera(const std::string& name) const;
+  const Frame* frame(int index) const;  // by its index, not its position; nullptr: none
   const ObjectTrack* object(const std::string& id) const;
   // Camera (OpenCV) to world for one image: its own pose if it has one, else the ego pose at
   // the image's timestamp x rig.

@@ -47,7 +47,9 @@ class ChatSession {
   std::string scene_, conversation_;
   Progress progress_;
   std::unique_ptr<bus::Node> node_;
-  processes::AgentLiveness liveness_;
+  // Six beats, at least 3 s: a manager on a loaded 2-core machine (workers training beside it)
+  // has missed three beats and been taken for dead; a crashed one is still named in seconds.
+  processes::AgentLiveness liveness_{6.0, 3.0};
   std::unique_ptr<ProgressBar> bar_;
   std::string stage_;
   bool lost_ = false;

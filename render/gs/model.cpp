@@ -164,9 +164,7 @@ GsImage RadianceField::render_region(const scene::Scene& scene, const scene::Cam
 
 Eigen::Isometry3d RadianceField::corrected_pose(const scene::Scene& scene, int frame, const std::string& camera) const {
   const auto* cam = scene.camera(camera);
-  const scene::Frame* fr = nullptr;
-  for (const auto& f : scene.frames)
-    if (f.index == frame) fr = &f;
+  const scene::Frame* fr = scene.frame(frame);
   if (cam == nullptr || fr == nullptr) throw std::invalid_argument("no image of camera '" + camera + "' at frame " + std::to_string(frame));
   Eigen::Isometry3d pose = scene.camera_to_world(*fr, *cam);
   if (auto it = camera_correction.find(camera); it != camera_correction.end()) pose = pose * it->second.transform();
@@ -176,9 +174,8 @@ Eigen::Isometry3d RadianceField::corrected_pose(const scene::Scene& scene, int f
 
 double RadianceField::exposure(const scene::Scene& scene, int frame, const std::string& camera) const {
   double e = 1.0;
-  for (const auto& f : scene.frames)
-    if (f.index == frame)
-      if (auto it = f.images.find(camera); it != f.images.end() && it->second.exposure_s && use_exposure) e = *it->second.exposure_s;
+  if (const auto* f = scene.frame(frame))
+    if (auto it = f->images.find(camera); it != f->images.end() && it->second.exposure_s && use_exposure) e = *it->second.exposure_s;
   if (auto it = log_exposure.find({frame, camera}); it != log_exposure.end()) return e * std::exp(double(it->second));
   // An image not trained on (held out): the mean correction of its camera.
   double sum = 0;

@@ -61,8 +61,7 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
         // a perfect model would score on the held-out set, whose images carry sensor and
         // path-tracing noise.
         const scene::ImageRef* ref = nullptr;
-        for (const auto& f : s.frames)
-          if (f.index == v["frame"].get<int>() && f.images.count(cam->name)) ref = &f.images.at(cam->name);
+        if (const auto* f = s.frame(v["frame"].get<int>()); f != nullptr && f->images.count(cam->name)) ref = &f->images.at(cam->name);
         const auto captured = ref != nullptr ? captured_held_out.find(s.dir / ref->path) : captured_held_out.end();
         if (captured != captured_held_out.end()) {
           const scene::Camera c = scaled_camera(*cam, width);

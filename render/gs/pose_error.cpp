@@ -25,12 +25,6 @@ struct Errors {
   }
 };
 
-const scene::Frame* frame_at(const scene::Scene& s, int index) {
-  for (const auto& f : s.frames)
-    if (f.index == index) return &f;
-  return nullptr;
-}
-
 double median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
   return v[v.size() / 2];
@@ -57,7 +51,7 @@ std::optional<json> evaluate_pose_error(const RadianceField& model, const scene:
     const std::string camera = p.at("camera").str();
     if (!model.image_correction.count({frame, camera})) continue;  // held out: never refined
     const Eigen::Isometry3d truth = p.at("camera_to_world_true").rigid();
-    const scene::Frame* f = frame_at(s, frame);
+    const scene::Frame* f = s.frame(frame);
     const scene::Camera* cam = s.camera(camera);
     if (f == nullptr || cam == nullptr) continue;
     const Eigen::Isometry3d initial = s.camera_to_world(*f, *cam);  // where training started

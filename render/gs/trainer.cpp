@@ -185,9 +185,7 @@ void attach_lidar(const scene::Scene& s, std::vector<TrainImage>& images, uint64
     const auto it = world.find(im.frame);
     if (it == world.end()) continue;
     const auto& own = owner[im.frame];
-    const scene::Frame* fr = nullptr;
-    for (const auto& f : s.frames)
-      if (f.index == im.frame) fr = &f;
+    const scene::Frame* fr = s.frame(im.frame);
     std::vector<Eigen::Vector3f> pts;
     for (size_t i = 0; i < it->second.size(); ++i) {
       Eigen::Vector3d w = it->second[i];

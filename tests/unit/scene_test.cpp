@@ -191,3 +191,15 @@ TEST(Scene, AnImageTriggeredOffTheFrameTimeIsPosedWhereTheEgoWasWhenItFired) {
   s.frames[0].images["front"].camera_to_world = own;
   EXPECT_TRUE(s.camera_to_world(s.frames[0], cam).isApprox(own));
 }
+
+TEST(Scene, AFrameIsFoundByItsIndexNotItsPosition) {
+  Scene s;
+  for (int index : {10, 20, 30}) {
+    Frame f;
+    f.index = index;
+    s.frames.push_back(f);
+  }
+  ASSERT_NE(s.frame(20), nullptr);
+  EXPECT_EQ(s.frame(20), &s.frames[1]);
+  EXPECT_EQ(s.frame(1), nullptr);
+}
