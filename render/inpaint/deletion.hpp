@@ -26,8 +26,9 @@ class RadianceField;
 namespace chatsim::render::inpaint {
 
 // Raised when what a deletion fills with changes (cached deletion stages key on it).
-// 2: the fill's level matched to its surroundings; a rendered view's whole path of a removed
-// car cleared; the field's render in the image's own exposure.
+// 2: the fill's level matched to its surroundings; a rendered view's ground along a removed
+// car's path cleared where the render and the ground map differ; the field's render in the
+// image's own exposure; hidden objects take the background's ghosts in their swept space.
 inline constexpr int kDeletionVersion = 2;
 
 struct DeletionImage {
