@@ -66,7 +66,7 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
           // kept, so the depth below needs no second render.
           const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, hidden, opts);
           const auto& b = rendered[{im.frame, im.camera}] = model->render_region(*s, im.cam, im.pose, im.time, hidden, padded_bounds(mask, 2));
-          return cv::Mat(b.radiance * (model->exposure(*s, im.frame, im.camera) / im.exposure));
+          return cv::Mat(b.radiance * chatsim::render::inpaint::field_to_image_units(*model, *s, im));
         };
       stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
     }

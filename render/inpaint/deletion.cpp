@@ -455,11 +455,12 @@ BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model
     cv::Rect roi = cv::boundingRect(deletion_mask(s, im, hidden, o));
     if (roi.empty()) return cv::Mat(im.cam.height, im.cam.width, CV_32FC3, cv::Scalar::all(0));
     roi = cv::Rect(roi.x - 2, roi.y - 2, roi.width + 4, roi.height + 4);
-    // In the image's own units: a captured image divided by its recorded exposure differs from
-    // the field's by the exposure correction the field learned for it.
-    const double scale = model->exposure(s, im.frame, im.camera) / im.exposure;
-    return cv::Mat(model->render_region(s, im.cam, im.pose, im.time, hidden, roi).radiance * scale);
+    return cv::Mat(model->render_region(s, im.cam, im.pose, im.time, hidden, roi).radiance * field_to_image_units(*model, s, im));
   };
+}
+
+double field_to_image_units(const gs::RadianceField& field, const scene::Scene& s, const DeletionImage& im) {
+  return field.exposure(s, im.frame, im.camera) / im.exposure;
 }
 
 std::vector<DeletionImage> scene_images(const scene::Scene& s, const gs::RadianceField* field) {

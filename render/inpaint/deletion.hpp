@@ -84,6 +84,10 @@ DeletionStats delete_objects(const scene::Scene& scene, const std::vector<std::s
 BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model, const scene::Scene& scene,
                                   const DeletionOptions& options = {});
 
+// What the field's radiance is multiplied by to be in an image's own units: a captured image
+// divided by its recorded exposure differs from the field by the correction it learned for it.
+double field_to_image_units(const gs::RadianceField& field, const scene::Scene& scene, const DeletionImage& image);
+
 // A scene's captured images as deletion inputs (linear radiance at the recorded poses). With a
 // radiance field, in its units: each image divided by the exposure the field learned for it
 // (as the background stage's images are), else by its recorded exposure_s.

@@ -2,11 +2,11 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/scene/scene_json.hpp"
 #include "render/gs/model.hpp"
 #include "render/image_io.hpp"
 #include "render/image_metrics.hpp"
@@ -25,12 +25,12 @@ struct TruthView {
   double exposure = 1;
 };
 
-// Where two 8-bit images differ visibly (by more than one level in some channel).
+// Where two 8-bit images differ visibly (by 2 levels or more, summed over the channels).
 cv::Mat changed(const cv::Mat& a, const cv::Mat& b) {
   cv::Mat diff;
   cv::absdiff(a, b, diff);
   cv::Mat most;
-  cv::transform(diff, most, cv::Matx13f(1, 1, 1));  // a sum: > 1 when any channel moved by 2
+  cv::transform(diff, most, cv::Matx13f(1, 1, 1));  // summed over channels: 2 levels or more
   return most > 1;
 }
 
@@ -39,33 +39,34 @@ cv::Mat changed(const cv::Mat& a, const cv::Mat& b) {
 json evaluate_moved_view_deletion(const scene::Scene& s, std::shared_ptr<const gs::RadianceField> model, const std::string& save_dir) {
   const fs::path vj = s.dir / "ground_truth" / "views.json";
   if (!fs::exists(vj)) throw std::invalid_argument(vj.string() + ": missing: moved-view deletion needs a demo scene's shifted ground-truth views");
-  const json doc = json::parse(std::ifstream(vj));
+  const json doc = scene::read_json_file(vj);
   std::vector<std::string> vehicles;
   for (const auto& o : s.objects)
     if (o.has_category_prefix("vehicle")) vehicles.push_back(o.id);
   // The truth's vehicles at each instant, with their shadows under the true sun: left out.
   DeletionOptions truth_outline;
   if (const fs::path sky = s.dir / "ground_truth" / "sky.json"; fs::exists(sky)) {
-    const json j = json::parse(std::ifstream(sky));
-    if (j.contains("sun_direction_world"))
-      truth_outline.sun_direction = Eigen::Vector3d(j["sun_direction_world"][0], j["sun_direction_world"][1], j["sun_direction_world"][2]);
+    const json sky_doc = scene::read_json_file(sky);  // outlives the reader, which refers to it
+    if (const scene::FieldReader j(sky, sky_doc); j.has("sun_direction_world")) truth_outline.sun_direction = j.at("sun_direction_world").vec3();
   }
 
   std::vector<DeletionImage> field;  // the field's render of each shifted view (as the background stage makes it)
   std::vector<TruthView> truth;
-  for (const auto& v : doc.at("views")) {
-    if (v.at("shift") == "none") continue;
-    const auto* cam = s.camera(v.at("camera").get<std::string>());
+  const scene::FieldReader listed = scene::FieldReader(vj, doc).at("views");
+  for (size_t i = 0; i < listed.array_size(); ++i) {
+    const scene::FieldReader v = listed.at(i);
+    if (v.at("shift").str() == "none") continue;
+    const auto* cam = s.camera(v.at("camera").str());
     if (cam == nullptr) continue;
     DeletionImage im;
-    im.frame = v.at("frame"), im.camera = cam->name, im.cam = *cam, im.time = v.at("timestamp_s");
-    for (int k = 0; k < 16; ++k) im.pose.matrix()(k / 4, k % 4) = v.at("camera_to_world")[size_t(k)].get<double>();
+    im.frame = v.at("frame").integer(), im.camera = cam->name, im.cam = *cam, im.time = v.at("timestamp_s").number();
+    im.pose = v.at("camera_to_world").rigid();
     im.exposure = model->exposure(s, im.frame, im.camera);
     const gs::GsImage g = model->render(s, im.cam, im.pose, im.time);
     im.radiance = g.radiance;
     im.rendered_depth = g.depth;
     field.push_back(im);
-    truth.push_back({v.at("name"), read_rgb8(s.dir / v.at("image").get<std::string>()), v.at("exposure_s")});
+    truth.push_back({v.at("name").str(), read_rgb8(s.dir / v.at("image").str()), v.at("exposure_s").number()});
   }
   if (field.empty()) throw std::invalid_argument(vj.string() + ": no shifted views");
 

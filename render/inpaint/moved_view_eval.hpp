@@ -20,7 +20,8 @@ class RadianceField;
 
 namespace chatsim::render::inpaint {
 
-// Throws std::invalid_argument naming the file when the scene has no shifted ground-truth views.
+// Throws std::invalid_argument naming the file when the scene has no shifted ground-truth views,
+// scene::SceneError naming the file and field when one is malformed.
 nlohmann::json evaluate_moved_view_deletion(const scene::Scene& scene, std::shared_ptr<const gs::RadianceField> model,
                                             const std::string& save_dir = "");
 
