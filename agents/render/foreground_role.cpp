@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include <opencv2/imgproc.hpp>
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
 #include "agents/core/scene_cache.hpp"
@@ -16,6 +17,7 @@
 #include "agents/render/image_region.hpp"
 #include "agents/render/render_cache.hpp"
 #include "agents/render/render_job.hpp"
+#include "common/scene/scene_json.hpp"
 #include "render/equirect.hpp"
 #include "render/gs/rasterizer.hpp"
 #include "render/image_io.hpp"
@@ -26,34 +28,49 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 namespace r = chatsim::render;
 
-r::light::LightEstimate scene_light(const scene::Scene& s, bool* estimated) {
-  if (estimated != nullptr) *estimated = false;
-  static std::mutex mu;
-  std::lock_guard lock(mu);
-  const fs::path dir = scene_cache_dir(s);
-  const fs::path lj = dir / "light.json";
-  r::light::LightEstimate est;
-  // An estimate from before the clip's (with one "frame", not "frames") is made again.
-  const json cached = fs::exists(lj) ? json::parse(std::ifstream(lj)) : json();
-  if (cached.contains("frames")) {
-    est.sunny = cached["sky_type"] == "sunny";
+namespace {
+
+// The cached estimate, when this estimator's version made it and it reads whole; otherwise
+// none (and an unreadable file is named in the log), so it is made again.
+std::optional<r::light::LightEstimate> cached_light(const fs::path& lj) {
+  if (!fs::exists(lj)) return std::nullopt;
+  try {
+    const json cached = scene::read_json_file(lj);
+    if (cached.value("estimator_version", 0) != r::light::kLightEstimatorVersion) return std::nullopt;
+    r::light::LightEstimate est;
+    est.sunny = cached.at("sky_type") == "sunny";
     for (int k = 0; k < 3; ++k) {
-      est.sky.sun_direction[k] = cached["sun_direction_world"][size_t(k)];
-      est.sun_radiance[k] = cached["sun_radiance_rgb"][size_t(k)];
+      est.sky.sun_direction[k] = cached.at("sun_direction_world").at(size_t(k));
+      est.sun_radiance[k] = cached.at("sun_radiance_rgb").at(size_t(k));
     }
     est.sky.turbidity = cached.value("turbidity", 3.0f);
     est.sky.overcast = !est.sunny;
     est.scale = cached.value("scale", 1.0f);
     est.sun_cue = cached.value("sun_cue", "");
     return est;
+  } catch (const std::exception& e) {
+    spdlog::warn("{}: cannot use the cached light estimate ({}); estimating it again", lj.string(), e.what());
+    return std::nullopt;
   }
-  est = r::light::estimate_scene_light(s);
+}
+
+}  // namespace
+
+r::light::LightEstimate scene_light(const scene::Scene& s, bool* estimated) {
+  if (estimated != nullptr) *estimated = false;
+  static std::mutex mu;
+  std::lock_guard lock(mu);
+  const fs::path dir = scene_cache_dir(s);
+  const fs::path lj = dir / "light.json";
+  if (auto cached = cached_light(lj)) return *cached;
+  const r::light::LightEstimate est = r::light::estimate_scene_light(s);
   if (estimated != nullptr) *estimated = true;
   fs::create_directories(dir);
   est.dome().write_exr(dir / "sky.exr");
   json j = est.to_json("sky.exr");
   j["scale"] = est.scale;
   j["frames"] = r::light::scene_light_frames(s);
+  j["estimator_version"] = r::light::kLightEstimatorVersion;
   // Workers on other hosts may estimate at the same time: each writes its own temporary file.
   const fs::path tmp = dir / (".light.json.part" + std::to_string(getpid()));
   std::ofstream(tmp) << j.dump(1) << "\n";
