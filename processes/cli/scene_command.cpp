@@ -40,6 +40,7 @@ struct DemoArgs {
   bool layout_only = false;
   std::string preset = "default";
   int spp = 0;                // 0: the preset's
+  int truth_spp = 0;          // 0: the preset's, at least twice spp
   bool overcast = false;
   bool hide_exposure = false;
   double noise = 1.0;
@@ -54,6 +55,7 @@ int run_demo_render(const DemoArgs& a) {
   o.layout.seed = o.world.seed = a.seed;
   if (a.frames > 0) o.layout.frames = a.frames;
   if (a.spp > 0) o.spp = a.spp, o.truth_spp = std::max(o.truth_spp, 2 * a.spp);
+  if (a.truth_spp > 0) o.truth_spp = a.truth_spp;
   o.world.overcast = a.overcast;
   o.record_exposure = !a.hide_exposure;
   o.noise_scale = a.noise;
@@ -150,6 +152,10 @@ void add_scene_command(CLI::App& app, int& result) {
   demo->add_option("--preset", demo_args->preset, "default (640x426, 40 frames) or small (160x106, 8 frames; tests)")
       ->check(CLI::IsMember({"default", "small"}));
   demo->add_option("--spp", demo_args->spp, "path-tracing samples per pixel of the captured images")->check(CLI::Range(1, 4096));
+  demo->add_option("--truth-spp", demo_args->truth_spp,
+                   "samples per pixel of the ground-truth views (default: the preset's, 64, or twice --spp; fewer leave "
+                   "path-tracing noise in them, which lowers any model's score against them)")
+      ->check(CLI::Range(1, 4096));
   demo->add_flag("--overcast", demo_args->overcast, "an overcast sky (no sun) instead of a clear one");
   demo->add_flag("--hide-exposure", demo_args->hide_exposure, "leave exposure_s out of scene.json (unknown exposures)");
   demo->add_option("--noise", demo_args->noise, "sensor noise scale (0: none)")->check(CLI::Range(0.0, 20.0));

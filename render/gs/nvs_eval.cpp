@@ -1,11 +1,12 @@
 #include "render/gs/nvs_eval.hpp"
 
 #include <chrono>
-#include <fstream>
 #include <map>
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/scene/scene_json.hpp"
+#include "render/gs/moving_mask.hpp"
 #include "render/gs/pose_error.hpp"
 #include "render/gs/trainer.hpp"
 #include "render/image_io.hpp"
@@ -21,6 +22,7 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
   json views = json::array();
   std::map<std::string, std::vector<json>> sets;
   std::map<fs::path, cv::Mat> captured_held_out;  // read once: scored, then used for the ceiling
+  const auto moving = moving_objects(s);
   auto evaluate = [&](const std::string& set, const std::string& name, const scene::Camera& cam,
                       const Eigen::Isometry3d& pose, double time, double exposure, const fs::path& truth_file) {
     const scene::Camera c = scaled_camera(cam, width);
@@ -32,7 +34,13 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
     if (set == "held_out") captured_held_out[truth_file] = truth;
     const cv::Mat pred = encode_srgb8(img.radiance, float(exposure));
     if (!o.save_dir.empty()) write_rgb8(fs::path(o.save_dir) / set / (name + ".png"), pred);
-    const json r{{"set", set}, {"name", name}, {"psnr", psnr(pred, truth)}, {"ssim", ssim(pred, truth)}, {"render_s", secs}};
+    // The static background alone, where no moving object (nor its shadow) is at that time:
+    // what the background costs apart from what the moving cars cost. Not scored where moving
+    // objects cover nearly all of the view.
+    cv::Mat still;
+    cv::bitwise_not(moving_object_mask(s, moving, c, pose, time), still);
+    json r{{"set", set}, {"name", name}, {"psnr", psnr(pred, truth)}, {"ssim", ssim(pred, truth)}, {"render_s", secs}};
+    if (cv::countNonZero(still) >= 0.05 * double(still.total())) r["psnr_static"] = psnr(pred, truth, still);
     views.push_back(r);
     sets[set].push_back(r);
   };
@@ -52,42 +60,49 @@ json evaluate_nvs(const RadianceField& model, const scene::Scene& s, const NvsOp
   double ceiling_psnr = 0, ceiling_ssim = 0;
   int ceiling_n = 0;
   if (o.ground_truth && fs::exists(vj)) {
-    const json doc = json::parse(std::ifstream(vj));
-    for (const auto& v : doc["views"]) {
-      const auto* cam = s.camera(v["camera"].get<std::string>());
+    const json doc = scene::read_json_file(vj);  // outlives the readers, which refer to it
+    const scene::FieldReader listed = scene::FieldReader(vj, doc).at("views");
+    for (size_t i = 0; i < listed.array_size(); ++i) {
+      const scene::FieldReader v = listed.at(i);
+      const auto* cam = s.camera(v.at("camera").str());
       if (cam == nullptr) continue;
-      if (v["shift"] == "none" && held_out(v["frame"].get<int>(), o.holdout)) {
+      const int frame = v.at("frame").integer();
+      const std::string shift = v.at("shift").str(), name = v.at("name").str();
+      const fs::path image = s.dir / v.at("image").str();
+      const double time = v.at("timestamp_s").number(), exposure = v.at("exposure_s").number();
+      if (shift == "none" && held_out(frame, o.holdout)) {
         // The captured image against its noise-free view (same instant, same true pose): what
         // a perfect model would score on the held-out set, whose images carry sensor and
         // path-tracing noise.
         const scene::ImageRef* ref = nullptr;
-        if (const auto* f = s.frame(v["frame"].get<int>()); f != nullptr && f->images.count(cam->name)) ref = &f->images.at(cam->name);
+        if (const auto* f = s.frame(frame); f != nullptr && f->images.count(cam->name)) ref = &f->images.at(cam->name);
         const auto captured = ref != nullptr ? captured_held_out.find(s.dir / ref->path) : captured_held_out.end();
         if (captured != captured_held_out.end()) {
           const scene::Camera c = scaled_camera(*cam, width);
-          cv::Mat truth = read_rgb8(s.dir / v["image"].get<std::string>());
+          cv::Mat truth = read_rgb8(image);
           if (truth.cols != c.width || truth.rows != c.height) cv::resize(truth, truth, cv::Size(c.width, c.height), 0, 0, cv::INTER_AREA);
           ceiling_psnr += psnr(captured->second, truth), ceiling_ssim += ssim(captured->second, truth), ++ceiling_n;
         }
       }
-      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-      for (int k = 0; k < 16; ++k) pose.matrix()(k / 4, k % 4) = v["camera_to_world"][size_t(k)].get<double>();
-      const std::string shift = v["shift"];
-      evaluate(shift == "none" ? "truth_unshifted" : "truth_shifted_" + shift, v["name"], *cam, pose,
-               v["timestamp_s"].get<double>(), v["exposure_s"].get<double>(), s.dir / v["image"].get<std::string>());
+      evaluate(shift == "none" ? "truth_unshifted" : "truth_shifted_" + shift, name, *cam, v.at("camera_to_world").rigid(), time,
+               exposure, image);
       // Diagnosis: the same view at the pose training believes (recorded, corrected). Much
       // better than at the true pose means the pose corrections did not find the truth.
       if (shift == "none")
-        evaluate("truth_unshifted_at_model_pose", v["name"], *cam, model.corrected_pose(s, v["frame"], v["camera"]),
-                 v["timestamp_s"].get<double>(), v["exposure_s"].get<double>(), s.dir / v["image"].get<std::string>());
+        evaluate("truth_unshifted_at_model_pose", name, *cam, model.corrected_pose(s, frame, cam->name), time, exposure, image);
     }
   }
   json summary = json::object();
   for (const auto& [name, rs] : sets) {
-    double p = 0, q = 0, t = 0;
-    for (const auto& r : rs) p += r["psnr"].get<double>(), q += r["ssim"].get<double>(), t += r["render_s"].get<double>();
+    double p = 0, q = 0, t = 0, ps = 0;
+    int n_static = 0;
+    for (const auto& r : rs) {
+      p += r["psnr"].get<double>(), q += r["ssim"].get<double>(), t += r["render_s"].get<double>();
+      if (r.contains("psnr_static")) ps += r["psnr_static"].get<double>(), ++n_static;
+    }
     const double n = double(rs.size());
     summary[name] = {{"count", rs.size()}, {"psnr", p / n}, {"ssim", q / n}, {"render_s", t / n}};
+    if (n_static > 0) summary[name]["psnr_static"] = ps / n_static, summary[name]["static_count"] = n_static;
   }
   json report{{"sets", summary}, {"views", views}, {"width", width}};
   if (ceiling_n > 0)

@@ -19,7 +19,9 @@ struct NvsOptions {
   std::string save_dir;     // write renders here when not empty
 };
 
-// {"sets": {name: {count, psnr, ssim, render_s}}, "views": [...]}.
+// {"sets": {name: {count, psnr, psnr_static, ssim, render_s}}, "views": [...]}; psnr_static leaves out
+// where moving objects (and their shadows) are at the view's time, over the views with at least
+// 5 % of their pixels left (static_count).
 nlohmann::json evaluate_nvs(const RadianceField& model, const scene::Scene& scene, const NvsOptions& options);
 
 }  // namespace chatsim::render::gs

@@ -11,8 +11,11 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "agents/render/foreground_role.hpp"
+#include "agents/render/render_cache.hpp"
 #include "common/scene/camera_model.hpp"
 #include "render/demo/demo_generate.hpp"
+#include "render/gs/moving_mask.hpp"
 #include "render/gs/nvs_eval.hpp"
 #include "render/gs/trainer.hpp"
 #include "render/image_io.hpp"
@@ -45,7 +48,8 @@ class DemoScene : public ::testing::Test {
     fs::remove_all(*dir_);
     delete dir_;
   }
-  static nlohmann::json read(const fs::path& f) { return nlohmann::json::parse(std::ifstream(*dir_ / f)); }
+  static nlohmann::json read(const fs::path& f) { return read_json(*dir_ / f); }
+  static nlohmann::json read_json(const fs::path& f) { return nlohmann::json::parse(std::ifstream(f)); }
   // A radiance field of the draft preset, trained for a few iterations: enough to render.
   static render::gs::RadianceField quick_model(const scene::Scene& s, int iterations) {
     render::gs::TrainOptions t;
@@ -275,6 +279,52 @@ TEST_F(DemoScene, NvsEvalReportsWhatAPerfectModelWouldScoreOnTheHeldOutImages) {
   EXPECT_EQ(r["held_out_ceiling"]["count"].get<int>(), n);
   EXPECT_NEAR(r["held_out_ceiling"]["psnr"].get<double>(), expected / n, 1e-9);
   EXPECT_LT(r["held_out_ceiling"]["ssim"].get<double>(), 1.0);  // the captured images are noisy
+  // The static background's score leaves out where moving objects are; each set averages its
+  // views that have one.
+  for (const auto& [set, summary] : r["sets"].items()) {
+    double sum = 0;
+    int with_static = 0;
+    for (const auto& v : r["views"])
+      if (v["set"] == set && v.contains("psnr_static")) sum += v["psnr_static"].get<double>(), ++with_static;
+    if (with_static == 0) {
+      EXPECT_FALSE(summary.contains("psnr_static")) << set;
+      continue;
+    }
+    EXPECT_EQ(summary["static_count"].get<int>(), with_static) << set;
+    EXPECT_NEAR(summary["psnr_static"].get<double>(), sum / with_static, 1e-9) << set;
+  }
+  const auto moving = render::gs::moving_objects(s);
+  EXPECT_TRUE(std::find(moving.begin(), moving.end(), true) != moving.end());  // the fixture has moving cars
+}
+
+// The foreground and deletion agents estimate the scene's light once and cache it; a cache the
+// current estimator did not write, or one that does not read, is estimated again, not trusted.
+TEST_F(DemoScene, TheCachedLightIsReusedOnlyWhenThisEstimatorMadeItAndItReadsWhole) {
+  const auto s = scene::load_scene(*dir_);
+  const fs::path cache = *dir_ / "light-cache";
+  const char* before = std::getenv("CHATSIM_CACHE");
+  const std::string saved = before != nullptr ? before : "";
+  setenv("CHATSIM_CACHE", cache.c_str(), 1);
+  bool estimated = false;
+  const auto first = agents::render::scene_light(s, &estimated);
+  EXPECT_TRUE(estimated);
+  const fs::path lj = agents::render::scene_cache_dir(s) / "light.json";
+  ASSERT_TRUE(fs::exists(lj));
+  EXPECT_EQ(read_json(lj)["estimator_version"].get<int>(), render::light::kLightEstimatorVersion);
+  const auto again = agents::render::scene_light(s, &estimated);
+  EXPECT_FALSE(estimated);
+  EXPECT_TRUE(again.sky.sun_direction.isApprox(first.sky.sun_direction, 1e-6)) << again.sky.sun_direction.transpose();
+  auto older = read_json(lj);
+  older.erase("estimator_version");
+  std::ofstream(lj) << older.dump();
+  agents::render::scene_light(s, &estimated);
+  EXPECT_TRUE(estimated);
+  std::ofstream(lj) << "{\"sky_type\": ";  // cut short
+  agents::render::scene_light(s, &estimated);
+  EXPECT_TRUE(estimated);
+  EXPECT_EQ(read_json(lj)["estimator_version"].get<int>(), render::light::kLightEstimatorVersion);
+  if (before != nullptr) setenv("CHATSIM_CACHE", saved.c_str(), 1);
+  else unsetenv("CHATSIM_CACHE");
 }
 
 // The recorded rig is wrong only by the side cameras' calibration; the trigger offsets are in
