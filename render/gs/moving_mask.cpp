@@ -1,10 +1,10 @@
 #include "render/gs/moving_mask.hpp"
 
-#include <opencv2/imgproc.hpp>
+#include <cmath>
 
-#include "common/scene/camera_model.hpp"
 #include "common/scene/objects.hpp"
 #include "render/gs/model.hpp"
+#include "render/projected_hull.hpp"
 
 namespace chatsim::render::gs {
 
@@ -32,15 +32,7 @@ cv::Mat moving_object_mask(const scene::Scene& s, const std::vector<bool>& movin
     const double ground = c.z() - obj.size_lwh.z() / 2;
     const Eigen::Vector3d footprint(obj.size_lwh.x() + 2 * o.ground_pad_m, obj.size_lwh.y() + 2 * o.ground_pad_m, 0);
     for (const auto& p : scene::box_corners(Eigen::Vector3d(c.x(), c.y(), ground), footprint, yaw)) pts.push_back(p);
-    const auto px = scene::project_clipped(cam, pose, pts);
-    if (px.size() < 3) continue;
-    std::vector<cv::Point2f> f;
-    for (const auto& p : px) f.emplace_back(float(p.x()), float(p.y()));
-    std::vector<cv::Point2f> hull;
-    cv::convexHull(f, hull);
-    std::vector<cv::Point> poly;
-    for (const auto& p : hull) poly.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
-    cv::fillConvexPoly(mask, poly, 255);
+    fill_projected_hull(mask, cam, pose, pts);
   }
   return mask;
 }

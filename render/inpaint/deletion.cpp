@@ -13,6 +13,7 @@
 #include "render/image_io.hpp"
 #include "render/inpaint/exemplar_inpaint.hpp"
 #include "render/inpaint/seam_blend.hpp"
+#include "render/projected_hull.hpp"
 
 namespace chatsim::render::inpaint {
 namespace {
@@ -43,19 +44,11 @@ std::optional<scene::TrackPoint> at_time(const scene::Scene& s, const scene::Obj
   return p;
 }
 
-// Fills the image area of the convex hull of world points, clipped at the camera's near plane
-// (a box beside the car reaches behind the camera: only what is in front shows).
+// Fills the image area of the convex hull of world points (clipped at the near plane), dilated
+// by `pad` pixels.
 void fill_projected(cv::Mat& mask, const DeletionImage& im, const std::vector<Eigen::Vector3d>& pts, int pad) {
-  const auto projected = scene::project_clipped(im.cam, im.pose, pts);
-  if (projected.empty()) return;
-  std::vector<cv::Point2f> px;
-  for (const auto& p : projected) px.emplace_back(float(p.x()), float(p.y()));
-  std::vector<cv::Point2f> hull_f;
-  cv::convexHull(px, hull_f);
-  std::vector<cv::Point> hull;
-  for (const auto& p : hull_f) hull.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
   cv::Mat m(mask.size(), CV_8U, cv::Scalar(0));
-  cv::fillConvexPoly(m, hull, 255);
+  fill_projected_hull(m, im.cam, im.pose, pts);
   if (pad > 0) cv::dilate(m, m, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * pad + 1, 2 * pad + 1)));
   mask |= m;
 }
