@@ -1,5 +1,5 @@
 #pragma once
-// Marking where a 3D shape shows in an image: the convex hull of its points, projected.
+// Marking a convex region in a mask: the hull of points, in pixels or projected from the world.
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -8,6 +8,9 @@
 #include "common/scene/scene.hpp"
 
 namespace chatsim::render {
+
+// Sets to 255 the pixels of `mask` (CV_8UC1) inside the convex hull of `points` (pixels).
+void fill_convex_hull(cv::Mat& mask, const std::vector<cv::Point2f>& points);
 
 // Sets to 255 the pixels of `mask` (CV_8UC1, the camera's size) inside the image of the convex
 // hull of `world` points, clipped at the camera's near plane (a box beside the car reaches

@@ -141,20 +141,11 @@ void add_path_pixels(const DeletionImage& im, const std::vector<GroundMap>& maps
 // leave the mask.
 void keep_unghosted_ground(const cv::Mat& render, const cv::Mat& path, double min_log_step, cv::Mat& filled, cv::Mat& mask) {
   constexpr double kSigmaPx = 3;
-  cv::Mat w;
-  path.convertTo(w, CV_32F, 1.0 / 255);
-  cv::Mat wb;
-  cv::GaussianBlur(w, wb, cv::Size(0, 0), kSigmaPx);
-  cv::Mat w3;
-  cv::merge(std::vector<cv::Mat>{w, w, w}, w3);
-  cv::Mat wb3;
-  cv::merge(std::vector<cv::Mat>{wb, wb, wb}, wb3);
   // Per channel: the log radiance, smoothed over the path only.
   const auto level = [&](const cv::Mat& rgb) {
-    cv::Mat lg, out;
+    cv::Mat lg;
     cv::log(cv::max(rgb, 1e-4), lg);
-    cv::GaussianBlur(lg.mul(w3), out, cv::Size(0, 0), kSigmaPx);
-    return cv::Mat(out / cv::max(wb3, 1e-6));
+    return mean_over_mask(lg, path, kSigmaPx);
   };
   const cv::Mat a = level(render), b = level(filled);
   for (int y = 0; y < path.rows; ++y)
@@ -300,11 +291,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
     for (const auto& tp : obj->track) {
       std::vector<cv::Point2f> cells;
       for (const auto& c : ground_outline(tp, obj->size_lwh, o)) cells.emplace_back(float((c.x() - xmin) / gm.res), float((c.y() - ymin) / gm.res));
-      std::vector<cv::Point2f> hull_f;
-      cv::convexHull(cells, hull_f);
-      std::vector<cv::Point> hull;
-      for (const auto& q : hull_f) hull.emplace_back(int(std::lround(q.x)), int(std::lround(q.y)));
-      cv::fillConvexPoly(gm.path, hull, 255);
+      fill_convex_hull(gm.path, cells);
     }
     std::vector<std::vector<std::pair<float, cv::Vec3f>>> samples(size_t(w) * size_t(h));
     for (size_t i = 0; i < sources.size(); ++i) {

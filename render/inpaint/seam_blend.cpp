@@ -17,17 +17,6 @@ cv::Mat log_luma(const cv::Mat& rgb) {
   return out;
 }
 
-// The mean of `value` over `band` near each pixel (normalized convolution); `support` gets how
-// much of the band was near.
-cv::Mat band_mean(const cv::Mat& value, const cv::Mat& band, double sigma, cv::Mat& support) {
-  cv::Mat w;
-  band.convertTo(w, CV_32F, 1.0 / 255);
-  cv::Mat vw = value.mul(w);
-  cv::GaussianBlur(vw, vw, cv::Size(0, 0), sigma);
-  cv::GaussianBlur(w, support, cv::Size(0, 0), sigma);
-  return vw / cv::max(support, 1e-6);
-}
-
 // A smooth field through sparse samples (value where weight > 0): averages pulled down a
 // pyramid, then pushed back up into the gaps.
 cv::Mat push_pull(const cv::Mat& value, const cv::Mat& weight) {
@@ -51,6 +40,20 @@ cv::Mat push_pull(const cv::Mat& value, const cv::Mat& weight) {
 
 }  // namespace
 
+cv::Mat mean_over_mask(const cv::Mat& value, const cv::Mat& mask, double sigma, cv::Mat* support) {
+  cv::Mat w, blurred_w;
+  mask.convertTo(w, CV_32F, 1.0 / 255);
+  cv::GaussianBlur(w, blurred_w, cv::Size(0, 0), sigma);
+  if (support != nullptr) *support = blurred_w;
+  if (value.channels() > 1) {
+    cv::merge(std::vector<cv::Mat>(size_t(value.channels()), w), w);
+    cv::merge(std::vector<cv::Mat>(size_t(value.channels()), blurred_w), blurred_w);
+  }
+  cv::Mat vw = value.mul(w);
+  cv::GaussianBlur(vw, vw, cv::Size(0, 0), sigma);
+  return vw / cv::max(blurred_w, 1e-6);
+}
+
 int harmonize_fill(cv::Mat& filled, const cv::Mat& original, const cv::Mat& mask, const SeamOptions& o) {
   cv::Rect roi = cv::boundingRect(mask);
   if (roi.empty()) return 0;
@@ -63,11 +66,11 @@ int harmonize_fill(cv::Mat& filled, const cv::Mat& original, const cv::Mat& mask
   cv::dilate(m, grown, k);
   const cv::Mat inner = m & ~eroded, outer = grown & ~m;
   cv::Mat in_support, out_support;
-  const cv::Mat in_level = band_mean(log_luma(filled(roi)), inner, o.smooth_px, in_support);
+  const cv::Mat in_level = mean_over_mask(log_luma(filled(roi)), inner, o.smooth_px, &in_support);
   // Outside, only what is like the fill up to a gain: a car beside the hole is not its level.
   const cv::Mat out_log = log_luma(original(roi));
   const cv::Mat alike = (cv::abs(out_log - in_level) <= o.max_step) & (in_support >= 0.05f);
-  const cv::Mat out_level = band_mean(out_log, outer & alike, o.smooth_px, out_support);
+  const cv::Mat out_level = mean_over_mask(out_log, outer & alike, o.smooth_px, &out_support);
   // The level step at each inner outline pixel with both sides measured and alike in content.
   const cv::Mat step = out_level - in_level;
   cv::Mat weight(m.size(), CV_32F, cv::Scalar(0));

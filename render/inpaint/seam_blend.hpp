@@ -17,6 +17,11 @@ struct SeamOptions {
   double max_gain = 0.4;      // the applied |log gain| is clamped to this
 };
 
+// The mean of `value` (CV_32F, any channels) over the pixels of `mask` (CV_8UC1) near each pixel:
+// a Gaussian of `sigma` px, normalised by how much of the mask it reached (written to
+// `support`, CV_32FC1, when given).
+cv::Mat mean_over_mask(const cv::Mat& value, const cv::Mat& mask, double sigma, cv::Mat* support = nullptr);
+
 // Scales `filled` (CV_32FC3 radiance) inside `mask` (CV_8UC1) toward the level of `original`
 // just outside it. Returns the number of outline pixels used.
 int harmonize_fill(cv::Mat& filled, const cv::Mat& original, const cv::Mat& mask, const SeamOptions& options = {});
