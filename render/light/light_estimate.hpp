@@ -58,8 +58,9 @@ std::vector<LightView> scene_light_views(const scene::Scene& scene, int frame);
 std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);
 
 // Bumped when the estimator changes what it finds for the same scene: caches of estimates key
-// on it (1: the clip's frames, shadows scored by outline agreement).
-inline constexpr int kLightEstimatorVersion = 1;
+// on it (1: the clip's frames, shadows scored by outline agreement; 2: a low sun's disc found
+// inside a glow that clips one channel).
+inline constexpr int kLightEstimatorVersion = 2;
 
 // A scene's light, from `frames` instants spread over its clip (the sun does not move in a
 // clip; every instant adds vehicles whose shadows are measurable).

@@ -49,6 +49,26 @@ TEST(LightEstimate, ClearSkyWithTheSunInViewIsFoundWithinAFewDegrees) {
   EXPECT_LT(front["log10_intensity_error"].get<double>(), 0.5);
 }
 
+// A low sun in a glowing sky: the glow clips the red channel over a wide patch around the sun,
+// which is therefore no compact blob; the disc is where two channels clip.
+TEST(LightEstimate, ALowSunInAGlowThatClipsOneChannelIsFoundByItsDisc) {
+  SkyParams p;
+  p.sun_direction = dir_deg(20, 4);
+  EnvMap env = panorama(p);
+  const float zenith = luminance(env.radiance(Eigen::Vector3f::UnitZ()));
+  for (int y = 0; y < env.height(); ++y)
+    for (int x = 0; x < env.width(); ++x) {
+      const Eigen::Vector3f d = equirect_dir((x + 0.5f) / float(env.width()), (y + 0.5f) / float(env.height()));
+      if (d.z() < 0) continue;
+      const float apart = std::acos(std::clamp(d.dot(p.sun_direction.normalized()), -1.0f, 1.0f)) * 180 / float(M_PI);
+      env.at(x, y) += Rgb(1.0f, 0.3f, 0.08f) * zenith * 8 * std::exp(-apart / 12);
+    }
+  const auto r = light::evaluate_on_panorama(env, "glow", 1, 240);
+  const auto& front = heading(r, 0);
+  EXPECT_EQ(front["sun_cue"], "visible") << front.dump();
+  EXPECT_LT(front["peak_angular_error_deg"].get<double>(), 3.0) << front.dump();
+}
+
 // The sky gradient alone says little about a sun behind the cameras (Preetham is flat away
 // from the sun): what we can promise is no false "visible" sun and the right hemisphere. The
 // measured error here is about 64 degrees; the benchmark reports such cases.
