@@ -60,14 +60,10 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       const auto light = scene_light(*s);
       if (light.sunny) opts.sun_direction = light.sky.sun_direction.normalized().cast<double>();
       chatsim::render::inpaint::BackgroundRenderer behind;
-      if (model)
-        behind = [&](const DeletionImage& im, const std::vector<std::string>& hidden) {
-          // Only where the deletion needs it (the caller uses the pixels it could not fill);
-          // kept, so the depth below needs no second render.
-          const cv::Mat mask = chatsim::render::inpaint::deletion_mask(*s, im, hidden, opts);
-          const auto& b = rendered[{im.frame, im.camera}] = model->render_region(*s, im.cam, im.pose, im.time, hidden, padded_bounds(mask, 2));
-          return cv::Mat(b.radiance * chatsim::render::inpaint::field_to_image_units(*model, *s, im));
-        };
+      if (model)  // its renders kept, so the depth below needs no second render
+        behind = chatsim::render::inpaint::field_renderer(model, *s, opts, [&](const DeletionImage& im, const chatsim::render::gs::GsImage& g) {
+          rendered[{im.frame, im.camera}] = g;
+        });
       stats = chatsim::render::inpaint::delete_objects(*s, job.removed, targets, sources, opts, behind);
     }
     for (const auto& im : targets) {

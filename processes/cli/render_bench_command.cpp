@@ -96,7 +96,7 @@ int run_light(const LightArgs& a) {
 }
 
 struct DeletionArgs {
-  std::string scene, out = "bench/results/deletion.json", save, pair_scene, model;
+  std::string scene, out = "bench/results/deletion.json", save, pair_scene, pair_model, model;
   int max_objects = 6;
 };
 
@@ -122,7 +122,9 @@ int run_deletion(const DeletionArgs& a) {
     const auto ps = scene::load_scene(a.pair_scene);
     fs::path prefix(a.out);
     prefix.replace_extension("");
-    r["before_after"] = render::inpaint::deletion_before_after(ps, prefix.string() + "-" + ps.name + "-");
+    std::shared_ptr<const render::gs::RadianceField> pair_field;
+    if (!a.pair_model.empty()) pair_field = std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.pair_model));
+    r["before_after"] = render::inpaint::deletion_before_after(ps, prefix.string() + "-" + ps.name + "-", pair_field);
     std::printf("before/after pair on %s: %s\n", ps.name.c_str(), r["before_after"]["images"].dump().c_str());
   }
   write_report(a.out, r);
@@ -299,6 +301,11 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
                   "also remove a parked vehicle from this scene (e.g. the imported nuScenes scene) and save a "
                   "before / after / Telea image set beside the report")
       ->check(CLI::ExistingDirectory);
+  del->add_option("--pair-model", da->pair_model,
+                  "the pair scene's radiance field: also save the fill the deletion agent makes there, with the field "
+                  "behind the vehicle (<out>-<scene>-after-field.png)")
+      ->check(CLI::ExistingFile)
+      ->needs("--pair-scene");
   del->callback([da, &result] { result = run_deletion(*da); });
 }
 

@@ -430,12 +430,15 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
   return stats;
 }
 
-BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model, const scene::Scene& s, const DeletionOptions& o) {
-  return [model, &s, o](const DeletionImage& im, const std::vector<std::string>& hidden) {
+BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model, const scene::Scene& s, const DeletionOptions& o,
+                                  RenderKeeper keep) {
+  return [model, &s, o, keep](const DeletionImage& im, const std::vector<std::string>& hidden) {
     cv::Rect roi = cv::boundingRect(deletion_mask(s, im, hidden, o));
     if (roi.empty()) return cv::Mat(im.cam.height, im.cam.width, CV_32FC3, cv::Scalar::all(0));
-    roi = cv::Rect(roi.x - 2, roi.y - 2, roi.width + 4, roi.height + 4);
-    return cv::Mat(model->render_region(s, im.cam, im.pose, im.time, hidden, roi).radiance * field_to_image_units(*model, s, im));
+    roi = cv::Rect(roi.x - 2, roi.y - 2, roi.width + 4, roi.height + 4) & cv::Rect(0, 0, im.cam.width, im.cam.height);
+    const gs::GsImage rendered = model->render_region(s, im.cam, im.pose, im.time, hidden, roi);
+    if (keep) keep(im, rendered);
+    return cv::Mat(rendered.radiance * field_to_image_units(*model, s, im));
   };
 }
 

@@ -21,6 +21,7 @@
 
 namespace chatsim::render::gs {
 class RadianceField;
+struct GsImage;
 }
 
 namespace chatsim::render::inpaint {
@@ -81,8 +82,11 @@ DeletionStats delete_objects(const scene::Scene& scene, const std::vector<std::s
 
 // The radiance field's view without the hidden objects, rendered only around their masks (as
 // the deletion agent fills what the ground map cannot). `scene` must outlive the renderer.
+// `keep`, when given, is handed each render as the field made it (its depth serves the caller
+// without a second render).
+using RenderKeeper = std::function<void(const DeletionImage&, const gs::GsImage&)>;
 BackgroundRenderer field_renderer(std::shared_ptr<const gs::RadianceField> model, const scene::Scene& scene,
-                                  const DeletionOptions& options = {});
+                                  const DeletionOptions& options = {}, RenderKeeper keep = nullptr);
 
 // What the field's radiance is multiplied by to be in an image's own units: a captured image
 // divided by its recorded exposure differs from the field by the correction it learned for it.

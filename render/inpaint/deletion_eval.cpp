@@ -162,7 +162,7 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
   return {{"objects", per_object}, {"summary", summary}, {"targets", {{"psnr_gain_db", 3}, {"seconds_per_image", 0.5}}}};
 }
 
-json deletion_before_after(const scene::Scene& s, const std::string& prefix) {
+json deletion_before_after(const scene::Scene& s, const std::string& prefix, std::shared_ptr<const gs::RadianceField> field) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<DeletionImage> sources = scene_images(s);
   DeletionOptions dopt;
@@ -203,10 +203,23 @@ json deletion_before_after(const scene::Scene& s, const std::string& prefix) {
   write_rgb8(prefix + "before.png", before);
   write_rgb8(prefix + "after.png", encode_srgb8(target[0].radiance, float(target[0].exposure)));
   write_rgb8(prefix + "telea.png", telea);
-  return {{"scene", s.name}, {"object", best_id}, {"camera", target[0].camera}, {"frame", target[0].frame},
-          {"mask_share", best_share}, {"ground_seen", st.ground_seen}, {"seconds", st.seconds},
-          {"total_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()},
-          {"images", {prefix + "before.png", prefix + "after.png", prefix + "telea.png"}}};
+  json images{prefix + "before.png", prefix + "after.png", prefix + "telea.png"};
+  json out{{"scene", s.name}, {"object", best_id}, {"camera", target[0].camera}, {"frame", target[0].frame},
+           {"mask_share", best_share}, {"ground_seen", st.ground_seen}, {"seconds", st.seconds},
+           {"fallback_pixels", st.fallback_pixels}};  // what the ground map could not fill: 2D fill, or the field's render
+  if (field) {
+    // As the agent does: every image in the field's units, the field behind the vehicle.
+    const std::vector<DeletionImage> in_field_units = scene_images(s, field.get());
+    std::vector<DeletionImage> with_field{in_field_units[best_image]};
+    with_field[0].radiance = in_field_units[best_image].radiance.clone();
+    const DeletionStats field_stats = delete_objects(s, {best_id}, with_field, in_field_units, dopt, field_renderer(field, s, dopt));
+    write_rgb8(prefix + "after-field.png", encode_srgb8(with_field[0].radiance, float(with_field[0].exposure)));
+    images.push_back(prefix + "after-field.png");
+    out["seconds_with_field"] = field_stats.seconds;
+  }
+  out["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out["images"] = images;
+  return out;
 }
 
 }  // namespace chatsim::render::inpaint

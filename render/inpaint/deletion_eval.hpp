@@ -4,6 +4,7 @@
 // plates inside the mask (PSNR, SSIM), for temporal flicker (how much the filled ground
 // changes from frame to frame, in 8-bit levels), and for time per image.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,9 @@ nlohmann::json evaluate_deletion(const scene::Scene& scene, const DeletionEvalOp
 // For a scene without clean plates (a real capture): removes one parked vehicle (the one that
 // covers the most of an image while staying whole in it, with no labelled object in front)
 // and writes `<prefix>before.png`, `<prefix>after.png` and `<prefix>telea.png` for a person
-// to look at. Returns what it did.
-nlohmann::json deletion_before_after(const scene::Scene& scene, const std::string& prefix);
+// to look at. With the scene's radiance field, also `<prefix>after-field.png`: the field
+// renders what the ground map cannot fill, as the deletion agent does. Returns what it did.
+nlohmann::json deletion_before_after(const scene::Scene& scene, const std::string& prefix,
+                                     std::shared_ptr<const gs::RadianceField> field = nullptr);
 
 }  // namespace chatsim::render::inpaint

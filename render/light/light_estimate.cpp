@@ -240,8 +240,9 @@ ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::
 }
 
 // The most sun-like blob among a view's clipped pixels (`level`): compact, surrounded by sky or
-// glare (`glare`: pixels with any channel clipped) and by an aureole far brighter than the
-// view's sky (`mask`); its score is area times the aureole's brightness, 0 without one.
+// glare (`glare`: pixels with any channel clipped), and by an aureole far brighter than the
+// view's sky (`mask`) or by glare over half its ring (a clipped glow hides how bright the
+// aureole is); its score is area times the aureole's brightness, 0 without one.
 struct SunBlob {
   double score = 0;
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();

@@ -138,11 +138,12 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
       intensity = panorama_peak(dome).irradiance;
     }
     const double angle = std::acos(std::clamp(double(dir.dot(truth.direction)), -1.0, 1.0)) * 180 / M_PI;
-    const double log_err = std::abs(std::log10(std::max(intensity, 1e-12) / std::max(truth.irradiance, 1e-12)));
+    const double log_ratio = std::log10(std::max(intensity, 1e-12) / std::max(truth.irradiance, 1e-12)), log_err = std::abs(log_ratio);
     angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
     sunny += est.sunny ? 1 : 0;
     results.push_back({{"heading_deg", heading * 180 / M_PI}, {"sky_type", est.sunny ? "sunny" : "overcast"},
                        {"sun_cue", est.sun_cue}, {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
+                       {"log10_intensity_ratio", log_ratio},  // signed: above 0, the estimate is too bright
                        {"seconds", secs}});
   }
   return {{"panorama", name},

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <opencv2/imgproc.hpp>
 
@@ -163,6 +164,34 @@ TEST(DeletionPath, ARenderedViewLosesTheGhostAlongARemovedCarsPathACapturedViewK
   cv::extractChannel(cv::abs(targets[0].radiance - rendered_before), moved, 1);
   EXPECT_EQ(cv::countNonZero((moved > 1e-6f) & clean_path), 0) << "path ground the field already shows right is left as rendered";
   EXPECT_NEAR(mean_in(targets[1].radiance, ghost), 0.05f, 0.01f) << "captured: a dark patch there is real, and stays";
+}
+
+// The deletion agent keeps the field's render behind the removed car for its depth: the
+// renderer hands it over as rendered, and returns its radiance in the image's own units.
+TEST(RadianceField, TheRendererBehindAVehicleHandsOverWhatItRendered) {
+  const Street st;
+  auto field = std::make_shared<render::gs::RadianceField>();
+  field->gaussians.add({12.0f, -6.0f, 0.02f}, 1.5f, Eigen::Vector3f::Constant(0.5f), 0.95f);  // the road where the car is
+  field->owner.push_back(-1);
+  field->log_exposure[{0, "front"}] = float(std::log(2.0));  // the field learned this image twice as bright
+  DeletionImage im = st.image(0, false);
+  im.exposure = 1.0;
+  int kept = 0;
+  cv::Mat kept_radiance, kept_depth;
+  const auto behind = render::inpaint::field_renderer(field, st.scene, {}, [&](const DeletionImage& which, const render::gs::GsImage& g) {
+    ++kept;
+    EXPECT_EQ(which.frame, 0);
+    kept_radiance = g.radiance.clone(), kept_depth = g.depth.clone();
+  });
+  const cv::Mat out = behind(im, {"car"});
+  ASSERT_EQ(kept, 1);
+  ASSERT_EQ(out.size(), kept_radiance.size());
+  const cv::Rect car = cv::boundingRect(render::inpaint::deletion_mask(st.scene, im, {"car"}));
+  const cv::Point centre(car.x + car.width / 2, car.y + car.height - 2);  // low in the box: the road
+  ASSERT_GT(kept_radiance.at<cv::Vec3f>(centre)[0], 0.0f) << "the road Gaussian is rendered there";
+  EXPECT_NEAR(out.at<cv::Vec3f>(centre)[0], 2 * kept_radiance.at<cv::Vec3f>(centre)[0], 1e-5f) << "in the image's units";
+  EXPECT_GT(kept_depth.at<float>(centre), 5.0f) << "its depth comes along";
+  EXPECT_EQ(cv::countNonZero(kept_depth(cv::Rect(0, 0, 5, 5))), 0) << "rendered only around the mask";
 }
 
 TEST(RadianceField, HidingAnObjectAlsoDropsWhatTheBackgroundLearnedAlongItsPath) {
