@@ -43,6 +43,28 @@ inline void parallel_for_workers(int n, int threads, const std::function<void(in
   if (error) std::rethrow_exception(error);
 }
 
+// As parallel_for_workers, but worker w always takes items w, w + threads, w + 2 threads, ...:
+// per-worker sums then add the same items in the same order on every run (floating-point
+// sums, and so training, are reproducible for a given thread count).
+inline void parallel_for_workers_static(int n, int threads, const std::function<void(int, int)>& body) {
+  if (threads <= 0) threads = default_threads();
+  threads = std::min(threads, std::max(1, n));
+  std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
+  auto worker = [&](int w) {
+    try {
+      for (int i = w; i < n; i += threads) body(i, w);
+    } catch (...) {
+      errors[size_t(w)] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+  worker(0);
+  for (auto& t : pool) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
 inline void parallel_for(int n, const std::function<void(int)>& body, int threads = 0) {
   parallel_for_workers(n, threads, [&](int i, int) { body(i); });
 }

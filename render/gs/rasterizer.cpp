@@ -328,7 +328,8 @@ void Rasterizer::backward(const Gaussians& g, const SkyTexture* sky, const cv::M
     for (auto& s : sky_part) s.assign(sky->data().size(), 0.0f);
   const int n_tiles = tiles_x_ * tiles_y_;
   const bool has_depth = !d_depth.empty(), has_alpha = !d_alpha.empty();
-  parallel_for_workers(n_tiles, workers, [&](int t, int wk) {
+  // Static: each worker's partial sums cover the same tiles on every run (reproducible training).
+  parallel_for_workers_static(n_tiles, workers, [&](int t, int wk) {
     float* P = part[size_t(wk)].data();
     const int tx = t % tiles_x_, ty = t / tiles_x_;
     const int x0 = tx * kTile, y0 = ty * kTile;
@@ -380,7 +381,7 @@ void Rasterizer::backward(const Gaussians& g, const SkyTexture* sky, const cv::M
       for (size_t k = 0; k < s.size(); ++k) grads.sky[k] += s[k];
   std::vector<Eigen::Matrix<float, 6, 1>> pose_part(size_t(workers), Eigen::Matrix<float, 6, 1>::Zero());
   const int chunk = 4096;
-  parallel_for_workers(int((n + chunk - 1) / chunk), workers, [&](int ci, int w) {
+  parallel_for_workers_static(int((n + chunk - 1) / chunk), workers, [&](int ci, int w) {
     const size_t end = std::min(n, size_t(ci + 1) * chunk);
     for (size_t i = size_t(ci) * chunk; i < end; ++i) {
       if (!vis_[i]) continue;

@@ -96,6 +96,32 @@ TEST(GsRasterizer, GradientsMatchFiniteDifferences) {
   }
 }
 
+// Training is reproducible only if the backward pass sums the same terms in the same order on
+// every run: per-thread partial sums must cover the same tiles each time.
+TEST(GsRasterizer, GradientsAreBitForBitTheSameOnEveryRunWithSeveralThreads) {
+  GsView v = small_view();
+  v.width = 160, v.height = 120, v.fx = v.fy = 120, v.cx = 79.5f, v.cy = 59.5f;  // 80 tiles
+  const Gaussians g = random_gaussians(400, 11);
+  SkyTexture sky(16, 8, 0.1f);
+  const Weights w = random_weights(v, 13);
+  Rasterizer r;
+  r.threads = 4;
+  auto run = [&] {
+    r.forward(g, &sky, v);
+    GsGrads grads;
+    grads.reset(g.size(), size_t(sky.width() * sky.height()));
+    r.backward(g, &sky, w.rad, w.depth, w.alpha, grads);
+    return grads;
+  };
+  const GsGrads first = run();
+  for (int k = 0; k < 8; ++k) {
+    const GsGrads again = run();
+    ASSERT_EQ(again.gaussians, first.gaussians) << "run " << k;
+    ASSERT_EQ(again.sky, first.sky) << "run " << k;
+    ASSERT_EQ(again.pose, first.pose) << "run " << k;
+  }
+}
+
 TEST(GsRasterizer, PoseGradientMatchesMovingTheCamera) {
   GsView v = small_view();
   const Gaussians g = random_gaussians(20, 7);
