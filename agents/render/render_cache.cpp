@@ -4,6 +4,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "render/inpaint/deletion.hpp"
+#include "render/light/light_estimate.hpp"
+
 namespace chatsim::agents::render {
 namespace fs = std::filesystem;
 
@@ -48,6 +51,17 @@ std::string scene_key(const scene::Scene& s) {
 fs::path scene_cache_dir(const scene::Scene& s) { return cache_root() / "scenes" / scene_key(s); }
 
 std::string json_hash(const nlohmann::json& v) { return hex(fnv1a(v.dump())); }
+
+nlohmann::json deletion_stage_key(const nlohmann::json& after, const nlohmann::json& removed) {
+  return {{"after", after},
+          {"removed", removed},
+          {"fill_version", chatsim::render::inpaint::kDeletionVersion},
+          {"light_version", chatsim::render::light::kLightEstimatorVersion}};
+}
+
+nlohmann::json foreground_stage_key(const nlohmann::json& after, const nlohmann::json& added, int spp) {
+  return {{"after", after}, {"added", added}, {"spp", spp}, {"light_version", chatsim::render::light::kLightEstimatorVersion}};
+}
 
 bool stage_complete(const fs::path& dir) { return fs::exists(dir / "done.json"); }
 

@@ -10,7 +10,6 @@
 #include "agents/render/render_job.hpp"
 #include "agents/render/result_writer.hpp"
 #include "render/image_io.hpp"
-#include "render/inpaint/deletion.hpp"
 #include "common/util/preset_names.hpp"
 
 namespace chatsim::agents::render {
@@ -146,8 +145,8 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
     json last_key = bg_key;
     // Deletion: one request for all frames, so one ground map serves every frame.
     if (!removed.empty()) {
-      // The fill's version too: a stage filled by older code is not reused.
-      const json key{{"after", last_key}, {"removed", removed}, {"fill_version", chatsim::render::inpaint::kDeletionVersion}};
+      // The fill's and the light estimator's versions too: a stage made by older code is not reused.
+      const json key = deletion_stage_key(last_key, removed);
       RenderJob dj = job;
       dj.in = last;
       dj.removed = removed;
@@ -158,7 +157,7 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
     }
     // Added vehicles.
     if (!added.empty()) {
-      const json key{{"after", last_key}, {"added", added}, {"spp", task.foreground_spp}};
+      const json key = foreground_stage_key(last_key, added, task.foreground_spp);
       RenderJob fj = job;
       fj.in = last;
       fj.removed = removed;
