@@ -239,28 +239,32 @@ ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::
   return cue;
 }
 
-// The most sun-like blob among a view's clipped pixels (`level`): compact, surrounded by sky or
-// glare (`glare`: pixels with any channel clipped), and by an aureole far brighter than the
-// view's sky (`mask`) or by glare over half its ring (a clipped glow hides how bright the
-// aureole is); its score is area times the aureole's brightness, 0 without one.
-struct SunBlob {
-  double score = 0;
-  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
-};
-SunBlob find_sun_blob(const LightView& v, const cv::Mat& mask, const cv::Mat& g, const cv::Mat& level, const cv::Mat& glare) {
-  SunBlob best;
-  cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(level, labels, stats, centroids);
-  // The sky's typical brightness in this view: the sun's aureole is far above it.
+// The sky's typical brightness in a view (luminance `g` over its sky `mask`; 0 without sky):
+// a sun's aureole is far above it.
+float sky_median_of(const cv::Mat& mask, const cv::Mat& g) {
   std::vector<float> sky_lum;
   for (int y = 0; y < mask.rows; y += 2)
     for (int x = 0; x < mask.cols; x += 2)
       if (mask.at<uchar>(y, x)) sky_lum.push_back(g.at<float>(y, x));
-  float sky_median = 0;
-  if (!sky_lum.empty()) {
-    std::nth_element(sky_lum.begin(), sky_lum.begin() + long(sky_lum.size() / 2), sky_lum.end());
-    sky_median = sky_lum[sky_lum.size() / 2];
-  }
+  if (sky_lum.empty()) return 0;
+  std::nth_element(sky_lum.begin(), sky_lum.begin() + long(sky_lum.size() / 2), sky_lum.end());
+  return sky_lum[sky_lum.size() / 2];
+}
+
+// The most sun-like blob among a view's clipped pixels (`level`): compact, surrounded by sky or
+// glare (`glare`: pixels with any channel clipped), and by an aureole far brighter than the
+// view's sky (`mask`, its median `sky_median`) or by glare over half its ring (a clipped glow
+// hides how bright the aureole is); its score is area times the aureole's brightness, 0 without
+// one.
+struct SunBlob {
+  double score = 0;
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+};
+SunBlob find_sun_blob(const LightView& v, const cv::Mat& mask, const cv::Mat& g, float sky_median, const cv::Mat& level,
+                      const cv::Mat& glare) {
+  SunBlob best;
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(level, labels, stats, centroids);
   for (int k = 1; k < n; ++k) {
     const int area = stats.at<int>(k, cv::CC_STAT_AREA);
     if (area < 4 || size_t(area) > v.rgb.total() / 50) continue;
@@ -403,8 +407,9 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
     below.push_back(b);
     // A sun low in a glowing sky clips one channel over a wide patch around it: its disc is
     // the smaller patch where two channels clip.
+    const float sky_median = sky_median_of(mask, g);
     for (const cv::Mat& level : {clipped, clipped_two}) {
-      const SunBlob blob = find_sun_blob(v, mask, g, level, clipped);
+      const SunBlob blob = find_sun_blob(v, mask, g, sky_median, level, clipped);
       if (blob.score > sun_visible_area) sun_visible_area = blob.score, sun_visible = blob.direction;
     }
     // Sky samples: random subsets of the measured and of the clipped pixels, each capped on its
