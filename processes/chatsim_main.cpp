@@ -1,6 +1,7 @@
 // chatsim: the user's command, with sub-commands in the spirit of ros2.
 #include "common/util/exit_codes.hpp"
 #include "processes/agent_process.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 
 int main(int argc, char** argv) {
@@ -20,6 +21,9 @@ int main(int argc, char** argv) {
   chatsim::cli::add_light_command(app, result);
   chatsim::cli::add_run_commands(app, result);
   chatsim::cli::add_serve_command(app, result);
-  if (const int code = chatsim::processes::parse_or_exit(app, argc, argv); code >= 0) return code;
-  return result;
+  // A command that lets an exception out still ends with a message and a meaningful code.
+  return chatsim::cli::exit_code_of([&] {
+    if (const int code = chatsim::processes::parse_or_exit(app, argc, argv); code >= 0) return code;
+    return result;
+  });
 }

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -102,6 +103,9 @@ struct DeletionArgs {
 
 int run_deletion(const DeletionArgs& a) {
   const auto s = scene::load_scene(a.scene);
+  // The pair scene is loaded first: a bad one fails now, not after the demo's measurements.
+  std::optional<scene::Scene> ps;
+  if (!a.pair_scene.empty()) ps = scene::load_scene(a.pair_scene);
   render::inpaint::DeletionEvalOptions o;
   o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
   o.max_objects = a.max_objects;
@@ -117,15 +121,14 @@ int run_deletion(const DeletionArgs& a) {
     // And in the views the field renders (a moved view), against the shifted truth views.
     r["moved_views"] = render::inpaint::evaluate_moved_view_deletion(s, model, a.save.empty() ? "" : a.save + "/moved-views")["summary"];
   }
-  if (!a.pair_scene.empty()) {
+  if (ps) {
     // A real capture has no clean plates: a before / after pair beside the report instead.
-    const auto ps = scene::load_scene(a.pair_scene);
     fs::path prefix(a.out);
     prefix.replace_extension("");
     std::shared_ptr<const render::gs::RadianceField> pair_field;
     if (!a.pair_model.empty()) pair_field = std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.pair_model));
-    r["before_after"] = render::inpaint::deletion_before_after(ps, prefix.string() + "-" + ps.name + "-", pair_field);
-    std::printf("before/after pair on %s: %s\n", ps.name.c_str(), r["before_after"]["images"].dump().c_str());
+    r["before_after"] = render::inpaint::deletion_before_after(*ps, prefix.string() + "-" + ps->name + "-", pair_field);
+    std::printf("before/after pair on %s: %s\n", ps->name.c_str(), r["before_after"]["images"].dump().c_str());
   }
   write_report(a.out, r);
   fs::path png(a.out);

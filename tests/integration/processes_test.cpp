@@ -64,7 +64,9 @@ TEST(Processes, CommandsGivenAMissingSceneExitWithUsageCodeNamingIt) {
       {"render", "--model", (dir / "m.gs").string(), "--scene", scene, "--out", (dir / "out").string()},
       {"eval", "nvs", "--scene", scene, "--model", (dir / "m.gs").string()},
       {"eval", "deletion", "--scene", scene},
-      {"eval", "light", "--scene", scene}};
+      {"eval", "light", "--scene", scene},
+      {"bench", "deletion", "--scene", scene, "--out", (dir / "deletion.json").string()},
+      {"bench", "nvs", "--scene", scene, "--out", (dir / "nvs.json").string()}};
   for (auto args : commands) {
     args.insert(args.begin(), bin("chatsim"));
     ScopedProcess proc(test_support::spawn(args, log));
