@@ -365,6 +365,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
     ++stats.images_edited;
     cv::Mat filled = im.radiance.clone();
     cv::Mat fallback(mask.size(), CV_8U, cv::Scalar(0));
+    const double min_depression = o.min_ground_depression_deg * M_PI / 180;
     const Eigen::Matrix3d R = im.pose.linear();
     const Eigen::Vector3d C = im.pose.translation();
     for (int y = 0; y < mask.rows; ++y)
@@ -378,7 +379,8 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
           if (d.z() < -1e-6) {
             const double t = (gm.z - C.z()) / d.z();
             const Eigen::Vector3d p = C + t * d;
-            if (gm.contains(p.x(), p.y())) {
+            const double depression = std::atan2(C.z() - gm.z, (p - C).head<2>().norm());
+            if (gm.contains(p.x(), p.y()) && depression >= min_depression) {
               filled.at<cv::Vec3f>(y, x) = bilinear(gm.radiance, (p.x() - gm.x0) / gm.res - 0.5, (p.y() - gm.y0) / gm.res - 0.5);
               done = true;
             }

@@ -57,6 +57,12 @@ struct DeletionOptions {
   // and the ground map differ by more than this (|log| of their smoothed radiance, in any
   // channel); 0: all of it.
   double path_min_log_step = 0.15;
+  // The ground map fills a pixel only where its ray meets the ground at least this steeply. At
+  // grazing angles a few centimetres of ground height (a kerb, a slope, a box's bottom) move the
+  // point metres away, and the map's texture smears into streaks: the field's render, or 2D
+  // inpainting of what the image shows around the hole, fills it instead. 4.5 deg is about 20 m
+  // from a 1.6 m camera.
+  double min_ground_depression_deg = 4.5;
 };
 
 // Renders an image's view without the deleted objects (the radiance field), in the image's own

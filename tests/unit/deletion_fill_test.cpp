@@ -1,8 +1,10 @@
 // What the deletion fills with, on small synthetic scenes: the fill's level matched to the image
 // around it, a removed car's path cleared in a rendered view (where the radiance field smeared
-// its shadow) but not in a captured one, and the field's ghosts along that path hidden with it.
+// its shadow) but not in a captured one, the field's ghosts along that path hidden with it, and
+// where the ground map fills.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -209,6 +211,28 @@ TEST(RadianceField, HidingAnObjectAlsoDropsWhatTheBackgroundLearnedAlongItsPath)
   ASSERT_EQ(hidden.size(), 2u);
   EXPECT_FLOAT_EQ(hidden.at(0)[render::gs::kPosZ], 0.02f);
   EXPECT_FLOAT_EQ(hidden.at(1)[render::gs::kPosX], 5.0f);
+}
+
+// Where a ray meets the ground at a grazing angle, the ground map does not fill it (a few
+// centimetres of ground height move the point metres away): 2D inpainting does. A cone 30 m
+// ahead of a camera 1.5 m up is seen 2.9 deg down; 9 m ahead, 9.5 deg.
+TEST(DeletionFallback, TheGroundMapFillsOnlyWhereRaysMeetTheGroundSteeply) {
+  const auto fallback_share = [](double cone_x, double min_depression_deg = render::inpaint::DeletionOptions{}.min_ground_depression_deg) {
+    Street st;
+    for (auto& p : st.scene.objects[1].track) p.center.x() = cone_x;
+    std::vector<DeletionImage> sources;
+    for (int f = 0; f < 3; ++f) sources.push_back(st.image(f, false));
+    std::vector<DeletionImage> target{st.image(0, false)};
+    const int masked = cv::countNonZero(render::inpaint::deletion_mask(st.scene, target[0], {"cone"}));
+    render::inpaint::DeletionOptions o;
+    o.min_ground_depression_deg = min_depression_deg;
+    const auto stats = render::inpaint::delete_objects(st.scene, {"cone"}, target, sources, o);
+    EXPECT_GT(masked, 0);
+    return double(stats.fallback_pixels) / std::max(masked, 1);
+  };
+  EXPECT_DOUBLE_EQ(fallback_share(30), 1.0) << "far: none of it from the ground map";
+  EXPECT_LT(fallback_share(30, 0.0), 0.9) << "without the limit the map would fill its lower part";
+  EXPECT_LT(fallback_share(9), 0.7) << "near: its lower part from the ground map";
 }
 
 }  // namespace
