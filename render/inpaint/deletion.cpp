@@ -448,6 +448,18 @@ double field_to_image_units(const gs::RadianceField& field, const scene::Scene& 
   return field.exposure(s, im.frame, im.camera) / im.exposure;
 }
 
+std::vector<DeletionImage> in_field_units(std::vector<DeletionImage> images, const scene::Scene& s, const gs::RadianceField& field) {
+  for (auto& im : images) {
+    const double exposure = field.exposure(s, im.frame, im.camera);
+    // A new buffer (assigning the product would write into the one the caller's copy shares);
+    // the same pixels: radiance x exposure is kept.
+    const cv::Mat scaled = im.radiance * (im.exposure / exposure);
+    im.radiance = scaled;
+    im.exposure = exposure;
+  }
+  return images;
+}
+
 std::vector<DeletionImage> scene_images(const scene::Scene& s, const gs::RadianceField* field) {
   std::vector<DeletionImage> out;
   for (const auto& f : s.frames)

@@ -103,4 +103,8 @@ double field_to_image_units(const gs::RadianceField& field, const scene::Scene& 
 // (as the background stage's images are), else by its recorded exposure_s.
 std::vector<DeletionImage> scene_images(const scene::Scene& scene, const gs::RadianceField* field = nullptr);
 
+// The same images in a radiance field's units (its learned exposure per image), without reading
+// them again.
+std::vector<DeletionImage> in_field_units(std::vector<DeletionImage> images, const scene::Scene& scene, const gs::RadianceField& field);
+
 }  // namespace chatsim::render::inpaint

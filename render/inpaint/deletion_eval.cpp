@@ -209,10 +209,10 @@ json deletion_before_after(const scene::Scene& s, const std::string& prefix, std
            {"fallback_pixels", st.fallback_pixels}};  // what the ground map could not fill: 2D fill, or the field's render
   if (field) {
     // As the agent does: every image in the field's units, the field behind the vehicle.
-    const std::vector<DeletionImage> in_field_units = scene_images(s, field.get());
-    std::vector<DeletionImage> with_field{in_field_units[best_image]};
-    with_field[0].radiance = in_field_units[best_image].radiance.clone();
-    const DeletionStats field_stats = delete_objects(s, {best_id}, with_field, in_field_units, dopt, field_renderer(field, s, dopt));
+    const std::vector<DeletionImage> field_sources = in_field_units(sources, s, *field);
+    std::vector<DeletionImage> with_field{field_sources[best_image]};
+    with_field[0].radiance = field_sources[best_image].radiance.clone();
+    const DeletionStats field_stats = delete_objects(s, {best_id}, with_field, field_sources, dopt, field_renderer(field, s, dopt));
     write_rgb8(prefix + "after-field.png", encode_srgb8(with_field[0].radiance, float(with_field[0].exposure)));
     images.push_back(prefix + "after-field.png");
     out["seconds_with_field"] = field_stats.seconds;

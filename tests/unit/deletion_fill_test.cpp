@@ -196,6 +196,21 @@ TEST(RadianceField, TheRendererBehindAVehicleHandsOverWhatItRendered) {
   EXPECT_EQ(cv::countNonZero(kept_depth(cv::Rect(0, 0, 5, 5))), 0) << "rendered only around the mask";
 }
 
+TEST(RadianceField, ImagesInTheFieldsUnitsKeepTheirPixels) {
+  const Street st;
+  render::gs::RadianceField field;
+  field.log_exposure[{0, "front"}] = float(std::log(2.0));
+  DeletionImage im = st.image(0, false);
+  im.exposure = 0.5;
+  const auto out = render::inpaint::in_field_units({im}, st.scene, field);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_DOUBLE_EQ(out[0].exposure, field.exposure(st.scene, 0, "front"));
+  EXPECT_NE(out[0].exposure, im.exposure) << "the test needs a field that learned another exposure";
+  const cv::Mat pixels = out[0].radiance * out[0].exposure - im.radiance * im.exposure;
+  EXPECT_LT(cv::norm(pixels, cv::NORM_INF), 1e-6) << "radiance x exposure (the pixel) is unchanged";
+  EXPECT_LT(cv::norm(im.radiance - st.image(0, false).radiance, cv::NORM_INF), 1e-9) << "the input images are left alone";
+}
+
 TEST(RadianceField, HidingAnObjectAlsoDropsWhatTheBackgroundLearnedAlongItsPath) {
   const Street st;
   render::gs::RadianceField field;
