@@ -30,7 +30,8 @@ namespace chatsim::render::inpaint {
 // 2: the fill's level matched to its surroundings; a rendered view's ground along a removed
 // car's path cleared where the render and the ground map differ; the field's render in the
 // image's own exposure; hidden objects take the background's ghosts in their swept space.
-inline constexpr int kDeletionVersion = 2;
+// 3: no ground-map fill where the ray meets the ground at a grazing angle.
+inline constexpr int kDeletionVersion = 3;
 
 struct DeletionImage {
   int frame = 0;
