@@ -18,51 +18,55 @@ inline int default_threads() {
   return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
-// body(item, worker): worker is 0 .. threads-1, for per-thread accumulators.
-inline void parallel_for_workers(int n, int threads, const std::function<void(int, int)>& body) {
-  if (threads <= 0) threads = default_threads();
-  threads = std::min(threads, std::max(1, n));
-  std::atomic<int> next{0};
+namespace detail {
+
+// worker(w, failed) on `threads` threads (w = 0 on this one). The first exception any worker
+// throws sets `failed` (the others stop taking items) and is rethrown once all have joined.
+template <class Worker>
+void run_workers(int threads, Worker&& worker) {
+  std::atomic<bool> failed{false};
   std::exception_ptr error;
   std::mutex error_mu;
-  auto worker = [&](int w) {
-    for (int i = next++; i < n; i = next++) {
-      try {
-        body(i, w);
-      } catch (...) {
-        std::lock_guard lock(error_mu);
-        if (!error) error = std::current_exception();
-        next = n;  // stop handing out work
-      }
+  auto guarded = [&](int w) {
+    try {
+      worker(w, failed);
+    } catch (...) {
+      std::lock_guard lock(error_mu);
+      if (!error) error = std::current_exception();
+      failed = true;
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
-  worker(0);
+  for (int t = 1; t < threads; ++t) pool.emplace_back(guarded, t);
+  guarded(0);
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+}
+
+inline int worker_count(int n, int threads) {
+  if (threads <= 0) threads = default_threads();
+  return std::min(threads, std::max(1, n));
+}
+
+}  // namespace detail
+
+// body(item, worker): worker is 0 .. threads-1, for per-thread accumulators.
+inline void parallel_for_workers(int n, int threads, const std::function<void(int, int)>& body) {
+  threads = detail::worker_count(n, threads);
+  std::atomic<int> next{0};
+  detail::run_workers(threads, [&](int w, const std::atomic<bool>& failed) {
+    for (int i = next++; i < n && !failed; i = next++) body(i, w);
+  });
 }
 
 // As parallel_for_workers, but worker w always takes items w, w + threads, w + 2 threads, ...:
 // per-worker sums then add the same items in the same order on every run (floating-point
 // sums, and so training, are reproducible for a given thread count).
 inline void parallel_for_workers_static(int n, int threads, const std::function<void(int, int)>& body) {
-  if (threads <= 0) threads = default_threads();
-  threads = std::min(threads, std::max(1, n));
-  std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
-  auto worker = [&](int w) {
-    try {
-      for (int i = w; i < n; i += threads) body(i, w);
-    } catch (...) {
-      errors[size_t(w)] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
-  worker(0);
-  for (auto& t : pool) t.join();
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  threads = detail::worker_count(n, threads);
+  detail::run_workers(threads, [&](int w, const std::atomic<bool>& failed) {
+    for (int i = w; i < n && !failed; i += threads) body(i, w);
+  });
 }
 
 inline void parallel_for(int n, const std::function<void(int)>& body, int threads = 0) {
