@@ -347,6 +347,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
   }
   stats.ground_seen = all_cells > 0 ? seen_cells / all_cells : 0;
   // Write back.
+  const double min_depression = o.min_ground_depression_deg * M_PI / 180;
   for (auto& im : targets) {
     cv::Mat mask(im.cam.height, im.cam.width, CV_8U, cv::Scalar(0));
     cv::Mat owner(im.cam.height, im.cam.width, CV_32S, cv::Scalar(-1));
@@ -365,7 +366,6 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
     ++stats.images_edited;
     cv::Mat filled = im.radiance.clone();
     cv::Mat fallback(mask.size(), CV_8U, cv::Scalar(0));
-    const double min_depression = o.min_ground_depression_deg * M_PI / 180;
     const Eigen::Matrix3d R = im.pose.linear();
     const Eigen::Vector3d C = im.pose.translation();
     for (int y = 0; y < mask.rows; ++y)
@@ -472,11 +472,11 @@ std::vector<DeletionImage> scene_images(const scene::Scene& s, const gs::Radianc
       im.cam = *cam;
       im.pose = s.camera_to_world(f, *cam);
       im.time = ref.timestamp_s;
-      im.exposure = field ? field->exposure(s, f.index, name) : ref.exposure_s.value_or(1.0);
+      im.exposure = ref.exposure_s.value_or(1.0);
       im.radiance = decode_srgb8(read_rgb8(s.dir / ref.path)) / im.exposure;
       out.push_back(std::move(im));
     }
-  return out;
+  return field ? in_field_units(std::move(out), s, *field) : out;
 }
 
 }  // namespace chatsim::render::inpaint
