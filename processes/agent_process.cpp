@@ -279,7 +279,10 @@ class StopWatchdog {
       : thread_([this, &stop] {
           using namespace std::chrono_literals;
           while (!stop.load() && !finished_.load()) std::this_thread::sleep_for(20ms);
-          for (int i = 0; i < 45 && !finished_.load(); ++i) std::this_thread::sleep_for(20ms);
+          // The request may finish until a deadline 0.8 s after the signal is seen. Counting
+          // sleeps instead (45 of 20 ms) overshot the second under load: each sleep runs late.
+          const auto deadline = std::chrono::steady_clock::now() + 800ms;
+          while (!finished_.load() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(10ms);
           if (finished_.load()) return;
           spdlog::warn("stopping in the middle of a request (signal {}): its outputs are left unwritten", stop_signal());
           spdlog::default_logger()->flush();
