@@ -85,7 +85,8 @@ AgentOutcome deletion_inpaint(const AgentCall& call) {
       chatsim::render::write_exr(depth_file(job.out, im.camera, im.frame), depth);
     }
     return AgentOutcome::success({{"images", targets.size()}, {"edited", stats.images_edited}, {"ground_seen", stats.ground_seen},
-                                  {"fallback_pixels", stats.fallback_pixels}, {"seconds", stats.seconds}});
+                                  {"fallback_pixels", stats.fallback_pixels}, {"field_fills", stats.field_fills},
+                                  {"field_rejected", stats.field_rejected}, {"seconds", stats.seconds}});
   } catch (const scene::SceneError& e) {
     return AgentOutcome::failure(ErrorKind::BadRequest, std::string("bad scene: ") + e.what());
   } catch (const std::invalid_argument& e) {

@@ -6,8 +6,9 @@
 // markings and kerbs continue straight in that view), and every image takes its fill from the
 // one map, so the fill cannot flicker from frame to frame. Pixels whose rays do not end on that
 // ground (what stood behind the object) come from a renderer without the object when one is
-// given, else from 2D inpainting. The fill's level is matched to the image around it
-// (seam_blend.hpp) and the seam is feathered.
+// given (unless what it renders there lies before the object: the object itself, misplaced),
+// else from 2D inpainting that copies from beside the hole and never from objects that stay.
+// The fill's level is matched to the image around it (seam_blend.hpp) and the seam is feathered.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -31,7 +32,9 @@ namespace chatsim::render::inpaint {
 // car's path cleared where the render and the ground map differ; the field's render in the
 // image's own exposure; hidden objects take the background's ghosts in their swept space.
 // 3: no ground-map fill where the ray meets the ground at a grazing angle.
-inline constexpr int kDeletionVersion = 3;
+// 4: 2D inpainting copies from beside the hole, never from kept objects; the field does not fill
+// where its surface lies before the removed box.
+inline constexpr int kDeletionVersion = 4;
 
 struct DeletionImage {
   int frame = 0;
@@ -64,17 +67,36 @@ struct DeletionOptions {
   // inpainting of what the image shows around the hole, fills it instead. 4.5 deg is about 20 m
   // from a 1.6 m camera.
   double min_ground_depression_deg = 4.5;
+  // 2D inpainting copies from beside each hole pixel (exemplar_inpaint.hpp's beside_slope; 0:
+  // from anywhere near).
+  double fill_beside_slope = 0.1;
+  // The field's render fills behind the objects unless, over more than this share of the
+  // pixels whose rays meet a deleted object's box, its surface lies in front of that box (it
+  // renders the object itself, misplaced, not what stood behind it): then 2D inpainting does
+  // (1: always the field).
+  double max_field_in_front_share = 0.5;
+  // Only boxes nearer than this count. Farther, a box covers few pixels and the field's depth is
+  // loose: on the demo, cars 100 m away render 10 m and more before their boxes, yet the field's
+  // colours fill them better than 2D inpainting (19.2 against 16.9 dB).
+  double field_depth_check_max_m = 60;
 };
 
-// Renders an image's view without the deleted objects (the radiance field), in the image's own
-// units (its radiance x its exposure is the pixel); may be empty.
-using BackgroundRenderer = std::function<cv::Mat(const DeletionImage&, const std::vector<std::string>& hidden)>;
+// An image's view without the deleted objects (the radiance field), in the image's own units
+// (its radiance x its exposure is the pixel), and its z-depth (CV_32FC1, m; infinite where
+// nothing is). Either may be empty.
+struct BackgroundView {
+  cv::Mat radiance;
+  cv::Mat depth;
+};
+using BackgroundRenderer = std::function<BackgroundView(const DeletionImage&, const std::vector<std::string>& hidden)>;
 
 struct DeletionStats {
   int images_edited = 0;
   double ground_seen = 0;        // share of the ground map some view saw
   double seconds = 0;
   int fallback_pixels = 0;       // pixels not on the ground map
+  int field_fills = 0;           // images whose fallback pixels the field's render filled
+  int field_rejected = 0;        // images where its surface lay in front of the deleted boxes
 };
 
 // Where the objects (boxes and their shadows, padded) cover an image: CV_8UC1.

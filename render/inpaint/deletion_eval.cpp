@@ -139,6 +139,7 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
     const double n = double(targets.size());
     json obj{{"object", id}, {"images", targets.size()}, {"plates", np}, {"psnr", op / np}, {"ssim", os / np},
              {"seconds_per_image", st.seconds / n}, {"flicker", of}, {"ground_seen", st.ground_seen}};
+    if (opt.background) obj.update({{"field_fills", st.field_fills}, {"field_rejected", st.field_rejected}});
     // The baseline's fields only where it ran: no numbers rather than zeros.
     if (opt.baseline)
       obj.update({{"baseline_psnr", bp / np}, {"baseline_ssim", bs / np}, {"baseline_seconds_per_image", base_secs / n}, {"baseline_flicker", bf}});
@@ -154,7 +155,8 @@ json evaluate_deletion(const scene::Scene& s, const DeletionEvalOptions& opt) {
                {"ssim", ours_ssim / n_objects},
                {"seconds_per_image", ours_t / n_images},
                {"flicker", ours_flicker / n_objects},
-               {"behind_the_vehicle", opt.background ? "radiance field" : "2D exemplar inpainting"}};
+               {"behind_the_vehicle", opt.background ? "radiance field, or 2D exemplar inpainting where its surface lies before the vehicle's box"
+                                                     : "2D exemplar inpainting"}};
   if (opt.baseline)
     summary.update({{"baseline_psnr", base_psnr / n_objects}, {"psnr_gain_db", (ours_psnr - base_psnr) / n_objects},
                     {"baseline_ssim", base_ssim / n_objects}, {"baseline_seconds_per_image", base_t / n_images},
@@ -216,6 +218,7 @@ json deletion_before_after(const scene::Scene& s, const std::string& prefix, std
     write_rgb8(prefix + "after-field.png", encode_srgb8(with_field[0].radiance, float(with_field[0].exposure)));
     images.push_back(prefix + "after-field.png");
     out["seconds_with_field"] = field_stats.seconds;
+    out["field_fits"] = field_stats.field_fills > 0;  // else 2D inpainting filled behind the vehicle
   }
   out["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out["images"] = images;

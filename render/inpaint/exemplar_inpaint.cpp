@@ -9,8 +9,9 @@
 
 namespace chatsim::render::inpaint {
 
-cv::Mat exemplar_inpaint(const cv::Mat& image, const cv::Mat& hole_in, const ExemplarOptions& o) {
+cv::Mat exemplar_inpaint(const cv::Mat& image, const cv::Mat& hole_in, const ExemplarOptions& o, const cv::Mat& no_source) {
   CV_Assert(image.type() == CV_32FC3 && hole_in.type() == CV_8UC1 && image.size() == hole_in.size());
+  CV_Assert(no_source.empty() || (no_source.type() == CV_8UC1 && no_source.size() == image.size()));
   const int r = o.patch / 2, w = image.cols, h = image.rows;
   cv::Mat img = image.clone();
   cv::Mat hole = hole_in.clone();
@@ -22,6 +23,7 @@ cv::Mat exemplar_inpaint(const cv::Mat& image, const cv::Mat& hole_in, const Exe
   {
     cv::Mat eroded;
     cv::Mat known = hole == 0;
+    if (!no_source.empty()) known &= no_source == 0;
     cv::erode(known, eroded, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(o.patch, o.patch)));
     eroded.copyTo(known_patch);
     for (int y = 0; y < h; ++y)
@@ -159,6 +161,7 @@ cv::Mat exemplar_inpaint(const cv::Mat& image, const cv::Mat& hole_in, const Exe
     for (int sy = std::max(r, target.y - reach); sy <= std::min(h - r - 1, target.y + reach); ++sy)
       for (int sx = std::max(r, target.x - reach); sx <= std::min(w - r - 1, target.x + reach); ++sx) {
         if (!known_patch.at<uchar>(sy, sx)) continue;
+        if (o.beside_slope > 0 && std::abs(sy - target.y) > r + o.beside_slope * std::abs(sx - target.x)) continue;
         double ssd = 0;
         for (int dy = -r; dy <= r && ssd < best; ++dy)
           for (int dx = -r; dx <= r; ++dx) {

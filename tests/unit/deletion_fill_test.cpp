@@ -185,7 +185,8 @@ TEST(RadianceField, TheRendererBehindAVehicleHandsOverWhatItRendered) {
     EXPECT_EQ(which.frame, 0);
     kept_radiance = g.radiance.clone(), kept_depth = g.depth.clone();
   });
-  const cv::Mat out = behind(im, {"car"});
+  const auto view = behind(im, {"car"});
+  const cv::Mat& out = view.radiance;
   ASSERT_EQ(kept, 1);
   ASSERT_EQ(out.size(), kept_radiance.size());
   const cv::Rect car = cv::boundingRect(render::inpaint::deletion_mask(st.scene, im, {"car"}));
@@ -194,6 +195,7 @@ TEST(RadianceField, TheRendererBehindAVehicleHandsOverWhatItRendered) {
   EXPECT_NEAR(out.at<cv::Vec3f>(centre)[0], 2 * kept_radiance.at<cv::Vec3f>(centre)[0], 1e-5f) << "in the image's units";
   EXPECT_GT(kept_depth.at<float>(centre), 5.0f) << "its depth comes along";
   EXPECT_EQ(cv::countNonZero(kept_depth(cv::Rect(0, 0, 5, 5))), 0) << "rendered only around the mask";
+  EXPECT_EQ(cv::norm(view.depth, kept_depth, cv::NORM_INF), 0.0) << "and the deletion gets it too";
 }
 
 TEST(RadianceField, ImagesInTheFieldsUnitsKeepTheirPixels) {
@@ -248,6 +250,35 @@ TEST(DeletionFallback, TheGroundMapFillsOnlyWhereRaysMeetTheGroundSteeply) {
   EXPECT_DOUBLE_EQ(fallback_share(30), 1.0) << "far: none of it from the ground map";
   EXPECT_LT(fallback_share(30, 0.0), 0.9) << "without the limit the map would fill its lower part";
   EXPECT_LT(fallback_share(9), 0.7) << "near: its lower part from the ground map";
+}
+
+// The field fills behind an object unless what it renders there lies in front of the object's
+// box: a field that learned a parked car a few metres before its box (a sparse capture does not
+// pin the depth) still shows the car, darkly blurred, after the box's Gaussians are dropped. Then
+// 2D inpainting fills.
+TEST(DeletionFallback, TheFieldDoesNotFillWithSomethingBeforeTheRemovedBox) {
+  Street st;
+  for (auto& p : st.scene.objects[0].track) p.center = {30, -3, 0.75};  // parked 30 m ahead: no ground-map fill
+  std::vector<DeletionImage> sources;
+  for (int f = 0; f < 3; ++f) sources.push_back(st.image(f, false));
+  const cv::Mat car = render::inpaint::deletion_mask(st.scene, sources[0], {"car"});
+  const auto run = [&](float depth_over_car, double max_in_front_share) {
+    std::vector<DeletionImage> target{st.image(0, false)};
+    render::inpaint::DeletionOptions o;
+    o.max_field_in_front_share = max_in_front_share;
+    cv::Mat depth = st.depth(cv::Mat(st.cam.height, st.cam.width, CV_8U, cv::Scalar(0)));  // the ground behind
+    if (depth_over_car > 0) depth.setTo(depth_over_car, car);
+    const render::inpaint::BackgroundRenderer field = [&](const DeletionImage& im, const std::vector<std::string>&) {
+      return render::inpaint::BackgroundView{im.radiance.clone(), depth};
+    };
+    return render::inpaint::delete_objects(st.scene, {"car"}, target, sources, o, field);
+  };
+  const auto behind = run(0, 0.5), before = run(26, 0.5), unchecked = run(26, 1);
+  EXPECT_GT(behind.fallback_pixels, 0);
+  EXPECT_EQ(behind.field_fills, 1) << "the ground behind the car";
+  EXPECT_EQ(before.field_fills, 0) << "a surface 26 m away, before the box (its near side is 29 m away)";
+  EXPECT_EQ(before.field_rejected, 1);
+  EXPECT_EQ(unchecked.field_fills, 1) << "with the check off, the field always fills";
 }
 
 }  // namespace
