@@ -1,7 +1,7 @@
 // What the deletion fills with, on small synthetic scenes: the fill's level matched to the image
 // around it, a removed car's path cleared in a rendered view (where the radiance field smeared
-// its shadow) but not in a captured one, the field's ghosts along that path hidden with it, and
-// where the ground map fills.
+// its shadow) but not in a captured one, the field's ghosts along that path hidden with it,
+// where the ground map fills, and where the field may not.
 #include <gtest/gtest.h>
 
 #include <algorithm>

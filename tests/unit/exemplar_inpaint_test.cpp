@@ -1,5 +1,6 @@
 // Exemplar inpainting continues structure (stripes, like lane markings) into a hole, where
-// diffusion (Telea) only blurs it.
+// diffusion (Telea) only blurs it; copying from beside keeps horizontal bands at their height;
+// excluded pixels are never copied.
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/photo.hpp>
