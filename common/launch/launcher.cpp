@@ -234,6 +234,9 @@ bool Launcher::wait_ready(Child& child, const std::atomic<bool>& stop) {
     if (it != last_beat_.end() && it->second.seen_s >= child.started_s) return true;
     poll_bus(0.02);
     reap(false);
+    // A process started earlier that died meanwhile (the bus, whose beats this wait needs) is
+    // respawned by its policy now, not only once every process is ready.
+    respawn_due();
     if (child.pid < 0) {
       spdlog::error("'{}' exited before it was ready", spec.name);
       return false;
@@ -322,6 +325,20 @@ void Launcher::reap(bool stopping) {
   }
 }
 
+void Launcher::respawn_due() {
+  const double now = mono_s();
+  for (auto& c : children_) {
+    if (c.pid < 0 && !c.done && c.restart_at_s >= 0 && now >= c.restart_at_s) {
+      try {
+        spawn(c);
+      } catch (const std::exception& e) {
+        spdlog::error("cannot respawn '{}': {}", c.spec->name, e.what());
+        c.done = c.failed = true;
+      }
+    }
+  }
+}
+
 int Launcher::run(const std::atomic<bool>& stop) {
   prctl(PR_SET_CHILD_SUBREAPER, 1);  // orphaned grandchildren come to us, so we can end them
   bool started = false;
@@ -339,17 +356,8 @@ int Launcher::run(const std::atomic<bool>& stop) {
   while (!stop.load()) {
     poll_bus(0.05);
     reap(false);
+    respawn_due();
     const double now = mono_s();
-    for (auto& c : children_) {
-      if (c.pid < 0 && !c.done && c.restart_at_s >= 0 && now >= c.restart_at_s) {
-        try {
-          spawn(c);
-        } catch (const std::exception& e) {
-          spdlog::error("cannot respawn '{}': {}", c.spec->name, e.what());
-          c.done = c.failed = true;
-        }
-      }
-    }
     if (now - last_overdue_check > 1.0) {
       last_overdue_check = now;
       for (const auto& name : monitor_.overdue(now)) {

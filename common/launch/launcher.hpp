@@ -57,6 +57,8 @@ class Launcher {
   std::vector<std::string> command_line(const ProcessSpec& spec) const;
   std::string resolve(const std::string& executable) const;
   void reap(bool stopping);
+  // Starts again every child whose scheduled respawn is due.
+  void respawn_due();
   void poll_bus(double seconds);
   void stop_all();
 

@@ -258,7 +258,8 @@ double share_in_front_of_boxes(const scene::Scene& s, const DeletionImage& im, c
       if (entry >= 1e30 || entry > max_distance) continue;
       ++hit;
       const float z = depth.at<float>(y, x);
-      if (std::isfinite(z) && z < entry - std::max(0.5, 0.03 * entry)) ++in_front;
+      // 0: outside what was rendered (render_region), no surface known there.
+      if (std::isfinite(z) && z > 0 && z < entry - std::max(0.5, 0.03 * entry)) ++in_front;
     }
   return hit > 0 ? double(in_front) / hit : 0;
 }

@@ -271,6 +271,35 @@ TEST(Launch, AProxyRestartNeedsNoAgentRestart) {
   EXPECT_TRUE(g.launcher.wait(10s));
 }
 
+// The bus proxy killed while the launcher still waits for an agent's first beat: its policy
+// respawns it then too, and startup completes. (The launcher used to respawn only once every
+// process was ready, and so timed out waiting for a beat that had no bus to travel on.)
+TEST(Launch, ABusKilledDuringStartupIsRespawnedAndStartupCompletes) {
+  const auto file = temp_path("startup-bus-kill.yaml");
+  std::ofstream(file) << "processes:\n"
+                         "  - {name: bus, kind: bus, executable: chatsim-bus, respawn: always, respawn_delay_s: 0.2}\n"
+                         "  - {name: view, executable: chatsim-view}\n";
+  LaunchedGraph g("startup-bus-kill", {file.string(), "--bus", "tcp://127.0.0.1:0"});
+  ASSERT_FALSE(g.endpoint.empty()) << read_file(g.log);
+  ASSERT_TRUE(g.watcher->wait_for("bus", 10s)) << read_file(g.log);
+  const int bus_pid = g.watcher->pids["bus"];
+  const auto log_has = [&](const std::string& text, std::chrono::milliseconds within) {
+    for (const auto end = std::chrono::steady_clock::now() + within; std::chrono::steady_clock::now() < end;) {
+      if (read_file(g.log).find(text) != std::string::npos) return true;
+      std::this_thread::sleep_for(5ms);
+    }
+    return false;
+  };
+  // The moment the view is started, well before its first beat (it needs the bus for that).
+  ASSERT_TRUE(log_has("started 'view'", 10s)) << read_file(g.log);
+  ASSERT_FALSE(read_file(g.log).find("processes ready") != std::string::npos) << "too late: the view was already ready";
+  kill(bus_pid, SIGKILL);
+  EXPECT_TRUE(log_has("all 2 processes ready", 15s)) << read_file(g.log);
+  g.node->shutdown();
+  kill(g.launcher.pid, SIGINT);
+  EXPECT_TRUE(g.launcher.wait(10s));
+}
+
 // A launch file with curve_keys: every process gets the keys; a tool with the "cli" key sees
 // the bus, a tool without keys is refused (exit code 3).
 TEST(Launch, CurveKeysSecureTheWholeGraph) {
