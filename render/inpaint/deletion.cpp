@@ -425,12 +425,9 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
     if (cv::countNonZero(fallback) > 0) {
       const BackgroundView bg = background ? background(im, ids) : BackgroundView{};
       bool use_field = !bg.radiance.empty();
-      if (use_field && !bg.depth.empty() && o.max_field_in_front_share < 1) {
+      if (use_field && !bg.depth.empty() && o.max_field_in_front_share < 1)
         use_field = share_in_front_of_boxes(s, im, ids, fallback, bg.depth, o.field_depth_check_max_m, 4) <= o.max_field_in_front_share;
-        ++(use_field ? stats.field_fills : stats.field_rejected);
-      } else if (use_field) {
-        ++stats.field_fills;
-      }
+      if (!bg.radiance.empty()) ++(use_field ? stats.field_fills : stats.field_rejected);
       if (use_field) {
         bg.radiance.copyTo(filled, fallback);
       } else {
@@ -444,7 +441,7 @@ DeletionStats delete_objects(const scene::Scene& s, const std::vector<std::strin
         // Labelled objects that stay are no source: a bus beside a removed car must not
         // spread into what stood behind the car.
         const cv::Mat kept = deletion_mask(s, im, others, tight_outline(o))(roi).clone();
-        // Sources from beside the hole reach further than from anywhere near did (80 px, not 40).
+        // 80 px: sources from beside must reach past the sides of a car-wide hole.
         const cv::Mat out = exemplar_inpaint(root, hole, {7, 80, o.fill_beside_slope}, kept);
         cv::Mat sq = out.mul(out);
         sq.copyTo(filled(roi), hole);

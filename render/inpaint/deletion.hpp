@@ -76,8 +76,8 @@ struct DeletionOptions {
   // (1: always the field).
   double max_field_in_front_share = 0.5;
   // Only boxes nearer than this count. Farther, a box covers few pixels and the field's depth is
-  // loose: on the demo, cars 100 m away render 10 m and more before their boxes, yet the field's
-  // colours fill them better than 2D inpainting (19.2 against 16.9 dB).
+  // loose: on the demo, a car 100 m away renders about 10 m and more before its box, yet the
+  // field's colours fill it better than 2D inpainting (19.2 against 16.9 dB).
   double field_depth_check_max_m = 60;
 };
 
