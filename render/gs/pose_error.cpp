@@ -1,6 +1,7 @@
 #include "render/gs/pose_error.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -15,10 +16,17 @@ namespace {
 
 struct Errors {
   std::vector<double> initial_deg, initial_m, refined_deg, refined_m;
+  std::array<std::vector<double>, 3> initial_axes, refined_axes;  // signed, about the camera's x, y, z
   void add(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& initial, const Eigen::Isometry3d& refined) {
     auto rotation_deg = [&](const Eigen::Isometry3d& p) {
       return Eigen::AngleAxisd(truth.linear().transpose() * p.linear()).angle() * 180.0 / M_PI;
     };
+    auto axes = [&](const Eigen::Isometry3d& p, std::array<std::vector<double>, 3>& out) {
+      const Eigen::AngleAxisd aa(truth.linear().transpose() * p.linear());
+      const Eigen::Vector3d v = aa.axis() * aa.angle() * 180.0 / M_PI;
+      for (int k = 0; k < 3; ++k) out[size_t(k)].push_back(v[k]);
+    };
+    axes(initial, initial_axes), axes(refined, refined_axes);
     initial_deg.push_back(rotation_deg(initial)), refined_deg.push_back(rotation_deg(refined));
     initial_m.push_back((initial.translation() - truth.translation()).norm());
     refined_m.push_back((refined.translation() - truth.translation()).norm());
@@ -31,9 +39,10 @@ double median(std::vector<double> v) {
 }
 
 json summary(const Errors& e) {
+  auto axes = [](const std::array<std::vector<double>, 3>& a) { return json::array({median(a[0]), median(a[1]), median(a[2])}); };
   return {{"count", e.refined_m.size()},
-          {"initial", {{"rotation_deg", median(e.initial_deg)}, {"translation_m", median(e.initial_m)}}},
-          {"refined", {{"rotation_deg", median(e.refined_deg)}, {"translation_m", median(e.refined_m)}}}};
+          {"initial", {{"rotation_deg", median(e.initial_deg)}, {"rotation_xyz_deg", axes(e.initial_axes)}, {"translation_m", median(e.initial_m)}}},
+          {"refined", {{"rotation_deg", median(e.refined_deg)}, {"rotation_xyz_deg", axes(e.refined_axes)}, {"translation_m", median(e.refined_m)}}}};
 }
 
 }  // namespace

@@ -12,9 +12,10 @@
 
 namespace chatsim::render::gs {
 
-// {"cameras": {name: {count, initial: {rotation_deg, translation_m}, refined: {...}}}, "all": {...}}
-// with medians over the images training refined; nullopt when the scene has no true poses or
-// the model refined none.
+// {"cameras": {name: {count, initial: {rotation_deg, rotation_xyz_deg, translation_m}, refined: {...}}},
+// "all": {...}} with medians over the images training refined; rotation_xyz_deg is the signed
+// error about the camera's own x (right), y (down) and z (forward) axes (which way refinement is
+// off). nullopt when the scene has no true poses or the model refined none.
 std::optional<nlohmann::json> evaluate_pose_error(const RadianceField& model, const scene::Scene& scene);
 
 }  // namespace chatsim::render::gs

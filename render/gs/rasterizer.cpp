@@ -449,6 +449,9 @@ void Rasterizer::backward(const Gaussians& g, const SkyTexture* sky, const cv::M
       dp.z() += d[9];
       const Eigen::Vector3f dmu = W.transpose() * dp + d_mu_dir;
       out[kPosX] += dmu.x(), out[kPosY] += dmu.y(), out[kPosZ] += dmu.z();
+      // Densification signal: the screen-space gradient in NDC units.
+      grads.screen[i] += std::sqrt(d[4] * d[4] * 0.25f * float(v.width * v.width) + d[5] * d[5] * 0.25f * float(v.height * v.height)) ;
+      if (pose_blind != nullptr && (*pose_blind)[i]) continue;
       // Camera twist (w, t) in the camera frame: p' = exp(-w) (p - t), so dp'/dw = [p]x and
       // dp'/dt = -I; the camera covariance turns with it (Sc' = Sc - [w]x Sc + Sc [w]x); the
       // view direction moves with the centre.
@@ -461,8 +464,6 @@ void Rasterizer::backward(const Gaussians& g, const SkyTexture* sky, const cv::M
         pose[k] += dSc.cwiseProduct(f.cov_cam * e - e * f.cov_cam).sum();
       }
       pose.tail<3>() += -dp - W * d_mu_dir;
-      // Densification signal: the screen-space gradient in NDC units.
-      grads.screen[i] += std::sqrt(d[4] * d[4] * 0.25f * float(v.width * v.width) + d[5] * d[5] * 0.25f * float(v.height * v.height)) ;
     }
   });
   for (const auto& pp : pose_part) grads.pose += pp;

@@ -45,6 +45,9 @@ class Rasterizer {
   // min_alpha are skipped, and a Gaussian only reaches extent_sigma standard deviations.
   float min_alpha = 1.0f / 255.0f;
   float extent_sigma = 3.0f;
+  // Gaussians (by index; nonzero: left out) whose gradients do not reach the camera pose
+  // (backward's grads.pose); their own gradients are unchanged. Null: all reach it.
+  const std::vector<uint8_t>* pose_blind = nullptr;
 
   // Renders; keeps what backward() needs. sky may be null (black far field).
   GsImage forward(const Gaussians& g, const SkyTexture* sky, const GsView& view);

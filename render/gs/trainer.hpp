@@ -13,9 +13,10 @@
 namespace chatsim::render::gs {
 
 // Bumped when a change makes models trained before it wrong for the same scene (2: images
-// start at the ego pose of their own timestamp, so earlier pose corrections no longer fit).
+// start at the ego pose of their own timestamp, so earlier pose corrections no longer fit;
+// 3: calibration refined from 2 % of training, moving shadows left out of it: better poses).
 // Caches of trained models key on it.
-inline constexpr int kTrainerVersion = 2;
+inline constexpr int kTrainerVersion = 3;
 
 struct TrainOptions {
   std::string preset = "fast";      // draft | fast | quality
@@ -23,7 +24,9 @@ struct TrainOptions {
   int max_width = 0;                // images wider than this are downscaled (0: the preset's)
   bool exposure = true;             // use exposure_s and learn per-image corrections
   bool pose_refinement = true;
-  float pose_start = 0.2f;          // share of the iterations before poses are refined
+  float pose_start = 0.2f;          // share of the iterations before each image's pose is refined
+  float camera_pose_start = 0.02f;  // ... and each camera's calibration (before the field learns around its error)
+  double pose_blind_pad_m = 4;      // ground this near a moving object's box does not pull the poses (its shadow)
   float coarse_share = 0.3f;        // share of the iterations trained at half resolution
   double depth_weight = 0.1;        // LiDAR depth supervision (relative L1) against the image loss; 0: none
   int holdout = 0;                  // hold out frames with index % holdout == holdout / 2 (0: none)
@@ -50,6 +53,13 @@ struct TrainReport {
 inline bool held_out(int frame_index, int every) { return every > 0 && frame_index % every == every / 2; }
 
 RadianceField train(const scene::Scene& scene, const TrainOptions& options, TrainReport* report = nullptr);
+
+// Which of the `placed` Gaussians (owner[j]: -1 background, else the object) lie on the ground
+// within `pad_m` of a moving object's box at `time_s` (within 0.5 m of its base): there its
+// shadow moves with it, which the static background cannot learn. Nonzero: left out of the
+// camera pose's gradient, which the smear would pull.
+std::vector<uint8_t> moving_shadow_band(const scene::Scene& scene, const Gaussians& placed, const std::vector<int>& owner, double time_s,
+                                        double pad_m);
 
 // A camera scaled to a smaller image (intrinsics follow), for training and rendering at lower
 // resolution.

@@ -344,6 +344,9 @@ TEST_F(DemoScene, EachImageIsPosedAtItsOwnTriggerTime) {
   ASSERT_TRUE(r.contains("pose_error")) << r.dump(1);
   const auto& left = r["pose_error"]["cameras"]["front_left"];
   EXPECT_NEAR(left["initial"]["rotation_deg"].get<double>(), 0.3, 1e-3);
+  // Per axis (the same calibration error in every image): the axes make up the whole angle.
+  const auto& axes = left["initial"]["rotation_xyz_deg"];
+  EXPECT_NEAR(std::hypot(axes[0].get<double>(), axes[1].get<double>(), axes[2].get<double>()), 0.3, 1e-3);
   EXPECT_LT(left["initial"]["translation_m"].get<double>(), 1e-3);
   EXPECT_GT(left["count"].get<int>(), 0);
   EXPECT_TRUE(std::isfinite(left["refined"]["rotation_deg"].get<double>()));

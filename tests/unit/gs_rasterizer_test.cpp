@@ -1,5 +1,5 @@
-// The Gaussian rasteriser's gradients against finite differences, and its images against what
-// a Gaussian must look like.
+// The Gaussian rasteriser's gradients against finite differences (and Gaussians left out of
+// the pose's), and its images against what a Gaussian must look like.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -151,6 +151,32 @@ TEST(GsRasterizer, PoseGradientMatchesMovingTheCamera) {
     const double fd = (loss(r, g, nullptr, a, w) - loss(r, g, nullptr, b, w)) / 2e-3;
     EXPECT_NEAR(grads.pose[k], fd, 0.05 * std::abs(fd) + 0.05) << "rotation " << k;
   }
+}
+
+TEST(GsRasterizer, GaussiansLeftOutOfThePoseGradientChangeNothingElse) {
+  const GsView v = small_view();
+  const Gaussians g = random_gaussians(20, 7);
+  const Weights w = random_weights(v, 9);
+  Rasterizer r;
+  auto grads_with = [&](const std::vector<uint8_t>* blind) {
+    r.pose_blind = blind;
+    r.forward(g, nullptr, v);
+    GsGrads out;
+    out.reset(g.size(), 0);
+    r.backward(g, nullptr, w.rad, w.depth, w.alpha, out);
+    return out;
+  };
+  std::vector<uint8_t> even(g.size()), odd(g.size()), all(g.size(), 1);
+  for (size_t i = 0; i < g.size(); ++i) (i % 2 ? odd : even)[i] = 1;
+  const GsGrads none_blind = grads_with(nullptr), even_blind = grads_with(&even), odd_blind = grads_with(&odd), all_blind = grads_with(&all);
+  EXPECT_EQ(even_blind.gaussians, none_blind.gaussians);
+  EXPECT_EQ(all_blind.screen, none_blind.screen);
+  EXPECT_EQ(all_blind.pose.norm(), 0.0f);
+  // Each Gaussian's share of the pose gradient: the two halves add up to the whole, and each
+  // half is a real part of it.
+  EXPECT_LT((even_blind.pose + odd_blind.pose - none_blind.pose).norm(), 1e-4f * none_blind.pose.norm());
+  EXPECT_GT((even_blind.pose - none_blind.pose).norm(), 0.1f * none_blind.pose.norm());
+  EXPECT_GT((odd_blind.pose - none_blind.pose).norm(), 0.1f * none_blind.pose.norm());
 }
 
 TEST(GsRasterizer, OneOpaqueGaussianLooksLikeAGaussianInFrontOfTheSky) {

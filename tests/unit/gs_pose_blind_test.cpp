@@ -1,0 +1,46 @@
+// Which Gaussians training keeps out of the camera pose's gradient: the ground where a moving
+// object's shadow travels with it (the synthetic street's truck), and nothing else.
+#include <gtest/gtest.h>
+
+#include "render/gs/trainer.hpp"
+#include "tests/support/synthetic_scene.hpp"
+
+namespace chatsim::render::gs {
+namespace {
+
+// The truck is 8 x 2.5 x 3 m, standing on z = 0, at x = 40 + 7 t (m, t in s); the parked car
+// stands at (20, -3.5).
+struct Placed {
+  Gaussians g;
+  std::vector<int> owner;
+  void add(const Eigen::Vector3f& p, int own = -1) {
+    g.add(p, 0.1f, Eigen::Vector3f::Zero(), 0.5f);
+    owner.push_back(own);
+  }
+};
+
+TEST(GsPoseBlind, TheGroundAroundAMovingObjectAtThatTimeAndNothingElse) {
+  const scene::Scene s = test_support::synthetic_scene(false);
+  Placed p;
+  p.add({54, 0, 0.1f});        // 0: 3 m ahead of the truck at t = 1 s, on the ground
+  p.add({47, 4.75f, 0});       // 1: 3.5 m beside it
+  p.add({56, 0, 0});           // 2: 5 m ahead of its front: beyond the 4 m pad
+  p.add({47, 0, 2});           // 3: in the air (the truck's side, not the ground)
+  p.add({20, -1.5f, 0});       // 4: beside the parked car
+  p.add({54, 0, 0.1f}, 1);     // 5: the truck's own Gaussian
+  const auto at_1s = moving_shadow_band(s, p.g, p.owner, 1.0, 4.0);
+  ASSERT_EQ(at_1s.size(), 6u);
+  EXPECT_TRUE(at_1s[0]);
+  EXPECT_TRUE(at_1s[1]);
+  EXPECT_FALSE(at_1s[2]);
+  EXPECT_FALSE(at_1s[3]);
+  EXPECT_FALSE(at_1s[4]);
+  EXPECT_FALSE(at_1s[5]);
+  // The band moves with the truck: at t = 0 it ends at x = 48.
+  EXPECT_FALSE(moving_shadow_band(s, p.g, p.owner, 0.0, 4.0)[0]);
+  // A narrower pad leaves out less.
+  EXPECT_FALSE(moving_shadow_band(s, p.g, p.owner, 1.0, 1.0)[0]);
+}
+
+}  // namespace
+}  // namespace chatsim::render::gs
