@@ -92,6 +92,13 @@ class SweptBoxes {
 
 Gaussians RadianceField::placed(const scene::Scene& scene, double t, const std::vector<std::string>& hide,
                                 std::vector<int>* source) const {
+  Gaussians out;
+  place(scene, t, hide, out, source);
+  return out;
+}
+
+void RadianceField::place(const scene::Scene& scene, double t, const std::vector<std::string>& hide, Gaussians& out,
+                          std::vector<int>* source) const {
   std::vector<SweptBoxes> swept;
   for (const auto& id : hide)
     if (const auto* o = scene.object(id); o != nullptr && !o->track.empty()) swept.emplace_back().add(*o);
@@ -101,7 +108,7 @@ Gaussians RadianceField::placed(const scene::Scene& scene, double t, const std::
     if (const auto* o = scene.object(objects[k]))
       if (const auto p = object_pose(scene, *o, t)) pose[k] = p->cast<float>();
   }
-  Gaussians out;
+  out.p.clear();
   out.p.reserve(gaussians.p.size());
   if (source) source->clear();
   for (size_t i = 0; i < gaussians.size(); ++i) {
@@ -128,7 +135,6 @@ Gaussians RadianceField::placed(const scene::Scene& scene, double t, const std::
       d[kColor + 4 * c + 1] = k.x(), d[kColor + 4 * c + 2] = k.y(), d[kColor + 4 * c + 3] = k.z();
     }
   }
-  return out;
 }
 
 GsImage RadianceField::render(const scene::Scene& scene, const scene::Camera& camera, const Eigen::Isometry3d& c2w,

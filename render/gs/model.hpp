@@ -51,6 +51,9 @@ class RadianceField {
   // darkening, just above the road) smeared along its path.
   Gaussians placed(const scene::Scene& scene, double time_s, const std::vector<std::string>& hide = {},
                    std::vector<int>* source = nullptr) const;
+  // The same into `out`, whose memory is reused (training places them every iteration).
+  void place(const scene::Scene& scene, double time_s, const std::vector<std::string>& hide, Gaussians& out,
+             std::vector<int>* source = nullptr) const;
 
   // Renders a view: HDR radiance (scene units), expected depth (m; +inf where transparent) and alpha.
   GsImage render(const scene::Scene& scene, const scene::Camera& camera, const Eigen::Isometry3d& camera_to_world,

@@ -322,10 +322,14 @@ void Rasterizer::backward(const Gaussians& g, const SkyTexture* sky, const cv::M
   const int workers = threads > 0 ? threads : default_threads();
   // Per worker: d/d(rgb[3], opacity, u, v, conic a, b, c, z) per Gaussian, sky and pose partials.
   constexpr int kPartial = 10;
-  std::vector<std::vector<float>> part(size_t(workers), std::vector<float>(n * kPartial, 0.0f));
-  std::vector<std::vector<float>> sky_part{size_t(workers)};
-  if (sky != nullptr)
-    for (auto& s : sky_part) s.assign(sky->data().size(), 0.0f);
+  // Kept between calls: training calls this every iteration, and these buffers (tens of MB)
+  // allocated afresh each time came as fresh pages from the system (page faults).
+  auto& part = part_;
+  auto& sky_part = sky_part_;
+  part.resize(size_t(workers));
+  for (auto& p : part) p.assign(n * kPartial, 0.0f);
+  sky_part.resize(size_t(workers));
+  for (auto& s : sky_part) s.assign(sky != nullptr ? sky->data().size() : 0, 0.0f);
   const int n_tiles = tiles_x_ * tiles_y_;
   const bool has_depth = !d_depth.empty(), has_alpha = !d_alpha.empty();
   // Static: each worker's partial sums cover the same tiles on every run (reproducible training).

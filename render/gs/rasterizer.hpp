@@ -72,6 +72,7 @@ class Rasterizer {
   std::vector<uint8_t> vis_;
   std::vector<uint32_t> tile_start_, tile_ids_;   // per tile: [start, start+count) into tile_ids_
   cv::Mat final_t_, n_contrib_;
+  std::vector<std::vector<float>> part_, sky_part_;  // backward's per-worker partials
   size_t visible_ = 0;
   int tiles_x_ = 0, tiles_y_ = 0;
 };

@@ -14,9 +14,9 @@ namespace chatsim::render::gs {
 
 // Bumped when a change makes models trained before it wrong for the same scene (2: images
 // start at the ego pose of their own timestamp, so earlier pose corrections no longer fit;
-// 3: calibration refined from 2 % of training, moving shadows left out of it: better poses).
-// Caches of trained models key on it.
-inline constexpr int kTrainerVersion = 3;
+// 3: calibration refined from 2 % of training, moving shadows left out of it: better poses;
+// 4: `fast` trains 1500 iterations, not 1000). Caches of trained models key on it.
+inline constexpr int kTrainerVersion = 4;
 
 struct TrainOptions {
   std::string preset = "fast";      // draft | fast | quality
@@ -54,12 +54,13 @@ inline bool held_out(int frame_index, int every) { return every > 0 && frame_ind
 
 RadianceField train(const scene::Scene& scene, const TrainOptions& options, TrainReport* report = nullptr);
 
-// Which of the `placed` Gaussians (owner[j]: -1 background, else the object) lie on the ground
-// within `pad_m` of a moving object's box at `time_s` (within 0.5 m of its base): there its
-// shadow moves with it, which the static background cannot learn. Nonzero: left out of the
-// camera pose's gradient, which the smear would pull.
-std::vector<uint8_t> moving_shadow_band(const scene::Scene& scene, const Gaussians& placed, const std::vector<int>& owner, double time_s,
-                                        double pad_m);
+// Which of the `placed` Gaussians of the background lie on the ground within `pad_m` of a
+// `moving` object's box at `time_s` (within 0.5 m of its base): there its shadow moves with it,
+// which the static background cannot learn. Nonzero: left out of the camera pose's gradient,
+// which the smear would pull. `moving` is moving_objects(scene); placed Gaussian j is the
+// model's source[j], whose owner is -1 for the background, else its object.
+std::vector<uint8_t> moving_shadow_band(const scene::Scene& scene, const std::vector<bool>& moving, const Gaussians& placed,
+                                        const std::vector<int>& source, const std::vector<int>& owner, double time_s, double pad_m);
 
 // A camera scaled to a smaller image (intrinsics follow), for training and rendering at lower
 // resolution.

@@ -228,6 +228,12 @@ TEST(RadianceField, HidingAnObjectAlsoDropsWhatTheBackgroundLearnedAlongItsPath)
   ASSERT_EQ(hidden.size(), 2u);
   EXPECT_FLOAT_EQ(hidden.at(0)[render::gs::kPosZ], 0.02f);
   EXPECT_FLOAT_EQ(hidden.at(1)[render::gs::kPosX], 5.0f);
+  // Placed into a buffer that held more (as training reuses one), the same and no more.
+  render::gs::Gaussians reused = field.placed(st.scene, 0.0);
+  std::vector<int> source{7, 7, 7, 7};
+  field.place(st.scene, 0.0, {"car"}, reused, &source);
+  EXPECT_EQ(reused.p, hidden.p);
+  EXPECT_EQ(source, (std::vector<int>{1, 2}));
 }
 
 // Where a ray meets the ground at a grazing angle, the ground map does not fill it (a few

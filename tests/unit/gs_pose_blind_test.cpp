@@ -2,6 +2,7 @@
 // object's shadow travels with it (the synthetic street's truck), and nothing else.
 #include <gtest/gtest.h>
 
+#include "render/gs/moving_mask.hpp"
 #include "render/gs/trainer.hpp"
 #include "tests/support/synthetic_scene.hpp"
 
@@ -10,12 +11,18 @@ namespace {
 
 // The truck is 8 x 2.5 x 3 m, standing on z = 0, at x = 40 + 7 t (m, t in s); the parked car
 // stands at (20, -3.5).
+// Placed in reverse order of the model's (source), so that owners are looked up through it.
 struct Placed {
   Gaussians g;
-  std::vector<int> owner;
+  std::vector<int> owner, source;
   void add(const Eigen::Vector3f& p, int own = -1) {
     g.add(p, 0.1f, Eigen::Vector3f::Zero(), 0.5f);
-    owner.push_back(own);
+    owner.insert(owner.begin(), own);
+    for (int& i : source) ++i;
+    source.push_back(0);
+  }
+  std::vector<uint8_t> band(const scene::Scene& s, double time_s, double pad_m) const {
+    return moving_shadow_band(s, moving_objects(s), g, source, owner, time_s, pad_m);
   }
 };
 
@@ -28,7 +35,7 @@ TEST(GsPoseBlind, TheGroundAroundAMovingObjectAtThatTimeAndNothingElse) {
   p.add({47, 0, 2});           // 3: in the air (the truck's side, not the ground)
   p.add({20, -1.5f, 0});       // 4: beside the parked car
   p.add({54, 0, 0.1f}, 1);     // 5: the truck's own Gaussian
-  const auto at_1s = moving_shadow_band(s, p.g, p.owner, 1.0, 4.0);
+  const auto at_1s = p.band(s, 1.0, 4.0);
   ASSERT_EQ(at_1s.size(), 6u);
   EXPECT_TRUE(at_1s[0]);
   EXPECT_TRUE(at_1s[1]);
@@ -37,9 +44,9 @@ TEST(GsPoseBlind, TheGroundAroundAMovingObjectAtThatTimeAndNothingElse) {
   EXPECT_FALSE(at_1s[4]);
   EXPECT_FALSE(at_1s[5]);
   // The band moves with the truck: at t = 0 it ends at x = 48.
-  EXPECT_FALSE(moving_shadow_band(s, p.g, p.owner, 0.0, 4.0)[0]);
+  EXPECT_FALSE(p.band(s, 0.0, 4.0)[0]);
   // A narrower pad leaves out less.
-  EXPECT_FALSE(moving_shadow_band(s, p.g, p.owner, 1.0, 1.0)[0]);
+  EXPECT_FALSE(p.band(s, 1.0, 1.0)[0]);
 }
 
 }  // namespace

@@ -120,6 +120,17 @@ TEST(GsRasterizer, GradientsAreBitForBitTheSameOnEveryRunWithSeveralThreads) {
     ASSERT_EQ(again.sky, first.sky) << "run " << k;
     ASSERT_EQ(again.pose, first.pose) << "run " << k;
   }
+  // The rasteriser keeps its buffers between calls: one run on a larger model without a sky
+  // in between changes nothing either.
+  const Gaussians other = random_gaussians(600, 17);
+  r.forward(other, nullptr, v);
+  GsGrads other_grads;
+  other_grads.reset(other.size(), 0);
+  r.backward(other, nullptr, w.rad, w.depth, w.alpha, other_grads);
+  const GsGrads after_other = run();
+  EXPECT_EQ(after_other.gaussians, first.gaussians);
+  EXPECT_EQ(after_other.sky, first.sky);
+  EXPECT_EQ(after_other.pose, first.pose);
 }
 
 TEST(GsRasterizer, PoseGradientMatchesMovingTheCamera) {
