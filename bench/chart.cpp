@@ -20,6 +20,12 @@ void put_title(cv::Mat& img, const std::string& title, int left, const cv::Scala
 
 }  // namespace
 
+int tick_decimals(double gap) {
+  if (!(gap > 0) || !std::isfinite(gap)) return 2;
+  // Ticks at least one unit of the last printed digit apart round to different labels.
+  return std::clamp(int(std::ceil(-std::log10(gap) - 1e-9)), 0, 6);
+}
+
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& pts) {
   const int w = 900, h = 600, left = 90, right = 40, top = 60, bottom = 80;
   cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -46,19 +52,23 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   auto px = [&](double x) { return int(left + (tx(x) - x0) / (x1 - x0) * (w - left - right)); };
   auto py = [&](double y) { return int(h - bottom - (y - y0) / (y1 - y0) * (h - top - bottom)); };
   const cv::Scalar ink(40, 40, 40), grid(225, 225, 225);
+  const int y_decimals = tick_decimals((y1 - y0) / 10);
   for (int k = 0; k <= 10; ++k) {
     const double y = y0 + (y1 - y0) * k / 10.0;
     cv::line(img, {left, py(y)}, {w - right, py(y)}, grid, 1);
-    cv::putText(img, cv::format(y1 - y0 < 5 ? "%.2f" : "%.1f", y), {left - 55, py(y) + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
-                cv::LINE_AA);
+    cv::putText(img, cv::format("%.*f", y_decimals, y), {left - 55, py(y) + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
   }
-  for (int k = 0; k <= 5; ++k) {
+  auto x_tick = [&](int k) {
     const double t = x0 + (x1 - x0) * k / 5;
-    const double x = spec.log_x ? std::pow(10, t) : t;
+    return spec.log_x ? std::pow(10, t) : t;
+  };
+  // On a log axis the first two ticks are the closest.
+  const int x_decimals = tick_decimals(x_tick(1) - x_tick(0));
+  for (int k = 0; k <= 5; ++k) {
     const int X = left + int(double(k) / 5 * (w - left - right));
     cv::line(img, {X, top}, {X, h - bottom}, grid, 1);
-    cv::putText(img, cv::format(x < 10 ? "%.2f" : "%.0f", x), {X - 18, h - bottom + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
-                ink, 1, cv::LINE_AA);
+    cv::putText(img, cv::format("%.*f", x_decimals, x_tick(k)), {X - 18, h - bottom + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
+                cv::LINE_AA);
   }
   cv::rectangle(img, {left, top}, {w - right, h - bottom}, ink, 1);
   put_title(img, spec.title, left, ink);
@@ -109,11 +119,12 @@ void write_stacked_bars_png(const std::filesystem::path& file, const std::string
   }
   auto px = [&](double x) { return int(left + x / x1 * (w - left - right)); };
   const int bottom_axis = top + int(bars.size()) * (bar_h + gap);
+  const int x_decimals = tick_decimals(x1 / 5);
   for (int k = 0; k <= 5; ++k) {
     const double x = x1 * k / 5;
     cv::line(img, {px(x), top}, {px(x), bottom_axis}, grid, 1);
-    cv::putText(img, cv::format(x < 2 ? "%.2f" : x < 10 ? "%.1f" : "%.0f", x), {px(x) - 12, bottom_axis + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
-                ink, 1, cv::LINE_AA);
+    cv::putText(img, cv::format("%.*f", x_decimals, x), {px(x) - 12, bottom_axis + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
+                cv::LINE_AA);
   }
   put_title(img, title, 20, ink);
   cv::putText(img, x_label, {w / 2 - 60, bottom_axis + 42}, cv::FONT_HERSHEY_SIMPLEX, 0.55, ink, 1, cv::LINE_AA);

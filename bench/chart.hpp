@@ -21,6 +21,10 @@ struct ChartSpec {
   bool log_x = false;
 };
 
+// Decimals that print axis ticks `gap` apart as distinct labels (0.121 and 0.127 at 3, not
+// both 0.12), and no more.
+int tick_decimals(double gap);
+
 // Writes a PNG; throws std::runtime_error when it cannot.
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& points);
 

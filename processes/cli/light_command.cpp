@@ -53,7 +53,7 @@ int run_estimate(const EstimateArgs& a) {
 
 struct EvalLightArgs {
   std::vector<std::string> hdri;
-  int headings = 8, width = 480, every = 5;
+  int headings = 8, width = render::light::kDefaultCropWidth, every = 5;
   std::string out, save_views, scene;
 };
 

@@ -64,7 +64,7 @@ int run_foreground(const ForegroundArgs& a) {
 struct LightArgs {
   std::vector<std::string> hdri;
   std::string out = "bench/results/light.json", save_views, scene;
-  int headings = 8, width = 320, every = 5;
+  int headings = 8, width = render::light::kDefaultCropWidth, every = 5;
 };
 
 int run_light(const LightArgs& a) {

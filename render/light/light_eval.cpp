@@ -144,6 +144,7 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
     results.push_back({{"heading_deg", heading * 180 / M_PI}, {"sky_type", est.sunny ? "sunny" : "overcast"},
                        {"sun_cue", est.sun_cue}, {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
                        {"log10_intensity_ratio", log_ratio},  // signed: above 0, the estimate is too bright
+                       {"estimated_direction", {dir.x(), dir.y(), dir.z()}},
                        {"seconds", secs}});
   }
   return {{"panorama", name},

@@ -2,6 +2,9 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -65,6 +68,22 @@ TEST(Chart, LongBarLabelsAreNotCoveredByTheBars) {
   }
   EXPECT_GT(last_ink, 300);  // the label is long: wider than the old fixed column
   EXPECT_LT(last_ink, first_bar);
+}
+
+
+// Ticks a narrow range apart got the same label (0.14, 0.14) at two fixed decimals.
+TEST(Chart, TickLabelsAreDistinctAndNoLongerThanNeeded) {
+  for (const auto& [lo, hi] : std::vector<std::pair<double, double>>{{0.1128, 0.1659}, {0.0, 1.05}, {2.7, 32.0}, {100, 900}, {0.5, 0.5004}}) {
+    const double gap = (hi - lo) / 5;
+    const int d = chatsim::bench::tick_decimals(gap);
+    std::set<std::string> labels;
+    for (int k = 0; k <= 5; ++k) labels.insert(cv::format("%.*f", d, lo + gap * k));
+    EXPECT_EQ(labels.size(), 6u) << lo << " to " << hi << " at " << d << " decimals";
+  }
+  EXPECT_EQ(chatsim::bench::tick_decimals(100), 0);
+  EXPECT_EQ(chatsim::bench::tick_decimals(1), 0);
+  EXPECT_EQ(chatsim::bench::tick_decimals(0.0106), 2);
+  EXPECT_EQ(chatsim::bench::tick_decimals(0.0066), 3);
 }
 
 }  // namespace
