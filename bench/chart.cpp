@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <opencv2/imgcodecs.hpp>
@@ -20,10 +21,21 @@ void put_title(cv::Mat& img, const std::string& title, int left, const cv::Scala
 
 }  // namespace
 
-int tick_decimals(double gap) {
+int tick_decimals(const std::vector<double>& ticks) {
+  double gap = std::numeric_limits<double>::infinity();
+  for (size_t k = 1; k < ticks.size(); ++k) gap = std::min(gap, std::abs(ticks[k] - ticks[k - 1]));
   if (!(gap > 0) || !std::isfinite(gap)) return 2;
-  // Ticks at least one unit of the last printed digit apart round to different labels.
-  return std::clamp(int(std::ceil(-std::log10(gap) - 1e-9)), 0, 6);
+  // Ticks at least one unit of the last printed digit apart round to different labels; more
+  // digits while a label would sit off its line by more than a twentieth of the spacing.
+  int d = std::clamp(int(std::ceil(-std::log10(gap) - 1e-9)), 0, 6);
+  auto off = [&](int digits) {
+    const double unit = std::pow(10.0, -digits);
+    double worst = 0;
+    for (double t : ticks) worst = std::max(worst, std::abs(std::round(t / unit) * unit - t));
+    return worst;
+  };
+  while (d < 6 && off(d) > gap / 20) ++d;
+  return d;
 }
 
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& pts) {
@@ -52,7 +64,9 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   auto px = [&](double x) { return int(left + (tx(x) - x0) / (x1 - x0) * (w - left - right)); };
   auto py = [&](double y) { return int(h - bottom - (y - y0) / (y1 - y0) * (h - top - bottom)); };
   const cv::Scalar ink(40, 40, 40), grid(225, 225, 225);
-  const int y_decimals = tick_decimals((y1 - y0) / 10);
+  std::vector<double> y_ticks;
+  for (int k = 0; k <= 10; ++k) y_ticks.push_back(y0 + (y1 - y0) * k / 10.0);
+  const int y_decimals = tick_decimals(y_ticks);
   for (int k = 0; k <= 10; ++k) {
     const double y = y0 + (y1 - y0) * k / 10.0;
     cv::line(img, {left, py(y)}, {w - right, py(y)}, grid, 1);
@@ -62,8 +76,9 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
     const double t = x0 + (x1 - x0) * k / 5;
     return spec.log_x ? std::pow(10, t) : t;
   };
-  // On a log axis the first two ticks are the closest.
-  const int x_decimals = tick_decimals(x_tick(1) - x_tick(0));
+  std::vector<double> x_ticks;
+  for (int k = 0; k <= 5; ++k) x_ticks.push_back(x_tick(k));
+  const int x_decimals = tick_decimals(x_ticks);
   for (int k = 0; k <= 5; ++k) {
     const int X = left + int(double(k) / 5 * (w - left - right));
     cv::line(img, {X, top}, {X, h - bottom}, grid, 1);
@@ -119,7 +134,9 @@ void write_stacked_bars_png(const std::filesystem::path& file, const std::string
   }
   auto px = [&](double x) { return int(left + x / x1 * (w - left - right)); };
   const int bottom_axis = top + int(bars.size()) * (bar_h + gap);
-  const int x_decimals = tick_decimals(x1 / 5);
+  std::vector<double> ticks;
+  for (int k = 0; k <= 5; ++k) ticks.push_back(x1 * k / 5);
+  const int x_decimals = tick_decimals(ticks);
   for (int k = 0; k <= 5; ++k) {
     const double x = x1 * k / 5;
     cv::line(img, {px(x), top}, {px(x), bottom_axis}, grid, 1);

@@ -21,9 +21,9 @@ struct ChartSpec {
   bool log_x = false;
 };
 
-// Decimals that print axis ticks `gap` apart as distinct labels (0.121 and 0.127 at 3, not
-// both 0.12), and no more.
-int tick_decimals(double gap);
+// Decimals that print these axis ticks as distinct labels (0.121 and 0.127 at 3, not both
+// 0.12), each close to its true value (17.04 rather than 17.0), and no more (3, 6, 9).
+int tick_decimals(const std::vector<double>& ticks);
 
 // Writes a PNG; throws std::runtime_error when it cannot.
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& points);

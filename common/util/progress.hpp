@@ -1,6 +1,7 @@
 #pragma once
 // A progress bar on stderr for long work: fraction, what is being done, elapsed time and ETA.
-// On a terminal it redraws one line; otherwise (logs, CI) it prints a line every 10 %.
+// On a terminal it redraws one line; otherwise (logs, CI) it prints a line every 10 %, with the
+// ETA too.
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -8,6 +9,23 @@
 #include <unistd.h>
 
 namespace chatsim {
+
+// Seconds left at this pace, or -1 before 1 % is done (too early to tell).
+inline double progress_eta_s(double fraction, double elapsed_s) {
+  return fraction > 0.01 ? elapsed_s * (1 - fraction) / fraction : -1;
+}
+
+// The line printed where stderr is not a terminal, e.g. "train:  40% iteration 600 (116s elapsed, ETA 174s)".
+inline std::string progress_log_line(const std::string& title, double fraction, const std::string& what, double elapsed_s) {
+  const double eta = progress_eta_s(fraction, elapsed_s);
+  char line[160];
+  std::snprintf(line, sizeof line, ": %3.0f%% ", 100 * fraction);
+  std::string out = title + line + what;
+  std::snprintf(line, sizeof line, " (%.0fs elapsed", elapsed_s);
+  out += line;
+  if (eta >= 0 && fraction < 1) out += ", ETA " + std::to_string(int(eta + 0.5)) + "s";
+  return out + ")";
+}
 
 class ProgressBar {
  public:
@@ -17,7 +35,7 @@ class ProgressBar {
   void update(double fraction, const std::string& what = "") {
     fraction = fraction < 0 ? 0 : (fraction > 1 ? 1 : fraction);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double eta = fraction > 0.01 ? elapsed * (1 - fraction) / fraction : -1;
+    const double eta = progress_eta_s(fraction, elapsed);
     if (tty_) {
       const int width = 30, filled = int(fraction * width);
       std::string bar(size_t(filled), '#');
@@ -28,7 +46,7 @@ class ProgressBar {
       drawn_ = true;
     } else if (int(fraction * 10) > last_decile_) {
       last_decile_ = int(fraction * 10);
-      std::fprintf(stderr, "%s: %3.0f%% %s (%.0fs elapsed)\n", title_.c_str(), 100 * fraction, what.c_str(), elapsed);
+      std::fprintf(stderr, "%s\n", progress_log_line(title_, fraction, what, elapsed).c_str());
     }
   }
   void finish() {

@@ -383,19 +383,38 @@ std::vector<std::optional<Eigen::Isometry3d>> static_boxes(const scene::Scene& s
 std::vector<uint8_t> moving_shadow_band(const scene::Scene& s, const std::vector<bool>& moves, const Gaussians& placed,
                                         const std::vector<int>& source, const std::vector<int>& owner, double time_s, double pad_m) {
   std::vector<uint8_t> out(placed.size(), 0);
-  std::vector<std::pair<Eigen::Isometry3f, Eigen::Vector3f>> moving;  // world to box frame, size
-  for (size_t k = 0; k < s.objects.size() && k < moves.size(); ++k)
-    if (moves[k])
-      if (const auto p = object_pose(s, s.objects[k], time_s)) moving.emplace_back(p->inverse().cast<float>(), s.objects[k].size_lwh.cast<float>());
-  if (moving.empty()) return out;
   const float pad = float(pad_m);
+  struct Band {
+    Eigen::Isometry3f to_box;  // world to box frame
+    Eigen::Vector3f size;
+    Eigen::AlignedBox3f world;  // holds the band, for a cheap test first
+  };
+  std::vector<Band> bands;
+  Eigen::AlignedBox3f any;  // holds every band
+  for (size_t k = 0; k < s.objects.size() && k < moves.size(); ++k) {
+    if (!moves[k]) continue;
+    const auto p = object_pose(s, s.objects[k], time_s);
+    if (!p) continue;
+    const Eigen::Vector3f size = s.objects[k].size_lwh.cast<float>();
+    const Eigen::Vector3f half(size.x() / 2 + pad, size.y() / 2 + pad, 0.5f), centre(0, 0, -size.z() / 2);
+    Eigen::AlignedBox3f world;
+    for (int c = 0; c < 8; ++c) {
+      const Eigen::Vector3f corner = centre + Eigen::Vector3f(c & 1 ? half.x() : -half.x(), c & 2 ? half.y() : -half.y(), c & 4 ? half.z() : -half.z());
+      world.extend(p->cast<float>() * corner);
+    }
+    any.extend(world);
+    bands.push_back({p->inverse().cast<float>(), size, world});
+  }
+  if (bands.empty()) return out;
   for (size_t j = 0; j < placed.size(); ++j) {
-    if (owner[size_t(source[j])] >= 0) continue;
     const float* g = placed.at(j);
     const Eigen::Vector3f w(g[kPosX], g[kPosY], g[kPosZ]);
-    for (const auto& [to_box, size] : moving) {
-      const Eigen::Vector3f q = to_box * w;
-      if (std::abs(q.x()) < size.x() / 2 + pad && std::abs(q.y()) < size.y() / 2 + pad && std::abs(q.z() + size.z() / 2) < 0.5f) {
+    // Most Gaussians (facades, trees, the sky) are nowhere near a band: one box test skips them.
+    if (!any.contains(w) || owner[size_t(source[j])] >= 0) continue;
+    for (const auto& b : bands) {
+      if (!b.world.contains(w)) continue;
+      const Eigen::Vector3f q = b.to_box * w;
+      if (std::abs(q.x()) < b.size.x() / 2 + pad && std::abs(q.y()) < b.size.y() / 2 + pad && std::abs(q.z() + b.size.z() / 2) < 0.5f) {
         out[j] = 1;
         break;
       }

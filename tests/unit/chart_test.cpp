@@ -1,6 +1,7 @@
 // The benchmark charts: every point lands inside the plot, whatever its units.
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -72,18 +73,28 @@ TEST(Chart, LongBarLabelsAreNotCoveredByTheBars) {
 
 
 // Ticks a narrow range apart got the same label (0.14, 0.14) at two fixed decimals.
-TEST(Chart, TickLabelsAreDistinctAndNoLongerThanNeeded) {
-  for (const auto& [lo, hi] : std::vector<std::pair<double, double>>{{0.1128, 0.1659}, {0.0, 1.05}, {2.7, 32.0}, {100, 900}, {0.5, 0.5004}}) {
+TEST(Chart, TickLabelsAreDistinctCloseToTheirValuesAndNoLongerThanNeeded) {
+  auto ticks = [](double lo, double hi, int n) {
+    std::vector<double> t;
+    for (int k = 0; k <= n; ++k) t.push_back(lo + (hi - lo) * k / n);
+    return t;
+  };
+  for (const auto& [lo, hi] : std::vector<std::pair<double, double>>{{0.1128, 0.1659}, {0.0, 1.05}, {2.7, 32.0}, {100, 900}, {0.5, 0.5004}, {16.9, 18.3}}) {
+    const auto t = ticks(lo, hi, 5);
     const double gap = (hi - lo) / 5;
-    const int d = chatsim::bench::tick_decimals(gap);
+    const int d = chatsim::bench::tick_decimals(t);
     std::set<std::string> labels;
-    for (int k = 0; k <= 5; ++k) labels.insert(cv::format("%.*f", d, lo + gap * k));
+    for (double v : t) {
+      labels.insert(cv::format("%.*f", d, v));
+      EXPECT_LE(std::abs(std::stod(cv::format("%.*f", d, v)) - v), gap / 20 + 1e-12) << v << " at " << d << " decimals";
+    }
     EXPECT_EQ(labels.size(), 6u) << lo << " to " << hi << " at " << d << " decimals";
   }
-  EXPECT_EQ(chatsim::bench::tick_decimals(100), 0);
-  EXPECT_EQ(chatsim::bench::tick_decimals(1), 0);
-  EXPECT_EQ(chatsim::bench::tick_decimals(0.0106), 2);
-  EXPECT_EQ(chatsim::bench::tick_decimals(0.0066), 3);
+  EXPECT_EQ(chatsim::bench::tick_decimals(ticks(0, 500, 5)), 0);
+  EXPECT_EQ(chatsim::bench::tick_decimals(ticks(0, 30, 10)), 0);       // 3, 6, 9: no ".0"
+  EXPECT_EQ(chatsim::bench::tick_decimals(ticks(0.1, 0.153, 5)), 3);   // 0.1106 is "0.111", not "0.11"
+  EXPECT_EQ(chatsim::bench::tick_decimals(ticks(16.9, 18.3, 10)), 2);  // 17.04 is "17.04", not "17.0"
+  EXPECT_EQ(chatsim::bench::tick_decimals({1.0}), 2);                 // one tick: no spacing to go by
 }
 
 }  // namespace

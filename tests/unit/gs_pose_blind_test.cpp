@@ -1,5 +1,7 @@
 // Which Gaussians training keeps out of the camera pose's gradient: the ground where a moving
 // object's shadow travels with it (the synthetic street's truck), and nothing else.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "render/gs/moving_mask.hpp"
@@ -47,6 +49,20 @@ TEST(GsPoseBlind, TheGroundAroundAMovingObjectAtThatTimeAndNothingElse) {
   EXPECT_FALSE(p.band(s, 0.0, 4.0)[0]);
   // A narrower pad leaves out less.
   EXPECT_FALSE(p.band(s, 1.0, 1.0)[0]);
+}
+
+TEST(GsPoseBlind, TheBandTurnsWithTheObject) {
+  scene::Scene s = test_support::synthetic_scene(false);
+  for (auto& point : s.objects[1].track) point.yaw = M_PI / 2;  // the truck turned across the road
+  Placed p;
+  p.add({54, 0, 0.1f});    // 0: 3 m ahead of the straight truck's front; 7 m off the turned one's side
+  p.add({47, 7.5f, 0.1f});  // 1: 3.5 m beyond the turned truck's front; 7.5 m beside the straight one
+  const auto turned = p.band(s, 1.0, 4.0);
+  EXPECT_FALSE(turned[0]);
+  EXPECT_TRUE(turned[1]);
+  const auto straight = p.band(test_support::synthetic_scene(false), 1.0, 4.0);
+  EXPECT_TRUE(straight[0]);
+  EXPECT_FALSE(straight[1]);
 }
 
 }  // namespace
