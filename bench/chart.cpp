@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -38,6 +39,22 @@ int tick_decimals(const std::vector<double>& ticks) {
   return d;
 }
 
+std::pair<double, double> nice_axis(double lo, double hi, int divisions) {
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || divisions < 1) return {lo, hi};
+  const double raw = (hi - lo) / divisions;
+  double unit = std::pow(10.0, std::floor(std::log10(raw)));
+  for (int tries = 0; tries < 8; ++tries) {
+    for (double m : {1.0, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0}) {
+      const double step = m * unit;
+      if (step < raw * (1 - 1e-9)) continue;
+      const double start = std::floor(lo / step + 1e-9) * step;
+      if (start + divisions * step >= hi - 1e-9 * step) return {start, start + divisions * step};
+    }
+    unit *= 10;
+  }
+  return {lo, hi};
+}
+
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& pts) {
   const int w = 900, h = 600, left = 90, right = 40, top = 60, bottom = 80;
   cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -51,15 +68,14 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   const double pad = std::max(1e-6, (x1 - x0) * 0.15);
   x0 -= pad;
   x1 += pad;
-  if (!spec.log_x) x0 = std::max(0.0, x0);
+  if (!spec.log_x) std::tie(x0, x1) = nice_axis(std::max(0.0, x0), x1, 5);
   // Shares (0..1) keep a fixed axis; anything else (dB, degrees) gets one fitted to the data.
   double y0 = 0.0, y1 = 1.05;
   double lo = 1e300, hi = -1e300;
   for (const auto& p : pts) lo = std::min(lo, p.y), hi = std::max(hi, p.y);
   if (!pts.empty() && (lo < 0 || hi > 1)) {
     const double ypad = std::max(0.5, (hi - lo) * 0.15);
-    y0 = lo - ypad;
-    y1 = hi + ypad;
+    std::tie(y0, y1) = nice_axis(lo - ypad, hi + ypad, 10);
   }
   auto px = [&](double x) { return int(left + (tx(x) - x0) / (x1 - x0) * (w - left - right)); };
   auto py = [&](double y) { return int(h - bottom - (y - y0) / (y1 - y0) * (h - top - bottom)); };

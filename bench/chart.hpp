@@ -21,6 +21,10 @@ struct ChartSpec {
   bool log_x = false;
 };
 
+// An axis from at most `lo` to at least `hi` whose `divisions` ticks fall on round values
+// (steps of 1, 2, 2.5, 3, 4, 5, 6 or 8 times a power of ten), e.g. 16.9-18.3 in 10: 16.8-18.8.
+std::pair<double, double> nice_axis(double lo, double hi, int divisions);
+
 // Decimals that print these axis ticks as distinct labels (0.121 and 0.127 at 3, not both
 // 0.12), each close to its true value (17.04 rather than 17.0), and no more (3, 6, 9).
 int tick_decimals(const std::vector<double>& ticks);

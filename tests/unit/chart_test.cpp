@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -73,6 +74,24 @@ TEST(Chart, LongBarLabelsAreNotCoveredByTheBars) {
 
 
 // Ticks a narrow range apart got the same label (0.14, 0.14) at two fixed decimals.
+TEST(Chart, AxesRunBetweenRoundTicksAroundTheData) {
+  using chatsim::bench::nice_axis;
+  const auto [db0, db1] = nice_axis(16.9, 18.3, 10);
+  EXPECT_DOUBLE_EQ(db0, 16.8);
+  EXPECT_DOUBLE_EQ(db1, 18.8);
+  const auto [a, b] = nice_axis(2.6, 33.0, 10);
+  EXPECT_DOUBLE_EQ(a, 0.0);
+  EXPECT_DOUBLE_EQ(b, 40.0);
+  for (const auto& [lo, hi, n] : std::vector<std::tuple<double, double, int>>{{0.1055, 0.1389, 5}, {-3.2, 7.9, 10}, {0.5, 0.5004, 5}, {100, 900, 5}}) {
+    const auto [y0, y1] = nice_axis(lo, hi, n);
+    EXPECT_LE(y0, lo);
+    EXPECT_GE(y1, hi);
+    EXPECT_LT(y1 - y0, 3 * (hi - lo)) << lo << " to " << hi;  // not needlessly wide
+    const double step = (y1 - y0) / n;
+    EXPECT_NEAR(y0 / step, std::round(y0 / step), 1e-6) << lo << " to " << hi;  // ticks on multiples of the step
+  }
+}
+
 TEST(Chart, TickLabelsAreDistinctCloseToTheirValuesAndNoLongerThanNeeded) {
   auto ticks = [](double lo, double hi, int n) {
     std::vector<double> t;
