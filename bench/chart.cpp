@@ -83,22 +83,20 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   std::vector<double> y_ticks;
   for (int k = 0; k <= 10; ++k) y_ticks.push_back(y0 + (y1 - y0) * k / 10.0);
   const int y_decimals = tick_decimals(y_ticks);
-  for (int k = 0; k <= 10; ++k) {
-    const double y = y0 + (y1 - y0) * k / 10.0;
+  for (const double y : y_ticks) {
     cv::line(img, {left, py(y)}, {w - right, py(y)}, grid, 1);
     cv::putText(img, cv::format("%.*f", y_decimals, y), {left - 55, py(y) + 5}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1, cv::LINE_AA);
   }
-  auto x_tick = [&](int k) {
-    const double t = x0 + (x1 - x0) * k / 5;
-    return spec.log_x ? std::pow(10, t) : t;
-  };
   std::vector<double> x_ticks;
-  for (int k = 0; k <= 5; ++k) x_ticks.push_back(x_tick(k));
+  for (int k = 0; k <= 5; ++k) {
+    const double t = x0 + (x1 - x0) * k / 5;
+    x_ticks.push_back(spec.log_x ? std::pow(10, t) : t);
+  }
   const int x_decimals = tick_decimals(x_ticks);
   for (int k = 0; k <= 5; ++k) {
     const int X = left + int(double(k) / 5 * (w - left - right));
     cv::line(img, {X, top}, {X, h - bottom}, grid, 1);
-    cv::putText(img, cv::format("%.*f", x_decimals, x_tick(k)), {X - 18, h - bottom + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
+    cv::putText(img, cv::format("%.*f", x_decimals, x_ticks[size_t(k)]), {X - 18, h - bottom + 20}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
                 cv::LINE_AA);
   }
   cv::rectangle(img, {left, top}, {w - right, h - bottom}, ink, 1);
@@ -153,8 +151,7 @@ void write_stacked_bars_png(const std::filesystem::path& file, const std::string
   std::vector<double> ticks;
   for (int k = 0; k <= 5; ++k) ticks.push_back(x1 * k / 5);
   const int x_decimals = tick_decimals(ticks);
-  for (int k = 0; k <= 5; ++k) {
-    const double x = x1 * k / 5;
+  for (const double x : ticks) {
     cv::line(img, {px(x), top}, {px(x), bottom_axis}, grid, 1);
     cv::putText(img, cv::format("%.*f", x_decimals, x), {px(x) - 12, bottom_axis + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
                 cv::LINE_AA);

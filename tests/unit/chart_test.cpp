@@ -72,8 +72,6 @@ TEST(Chart, LongBarLabelsAreNotCoveredByTheBars) {
   EXPECT_LT(last_ink, first_bar);
 }
 
-
-// Ticks a narrow range apart got the same label (0.14, 0.14) at two fixed decimals.
 TEST(Chart, AxesRunBetweenRoundTicksAroundTheData) {
   using chatsim::bench::nice_axis;
   const auto [db0, db1] = nice_axis(16.9, 18.3, 10);
@@ -92,6 +90,7 @@ TEST(Chart, AxesRunBetweenRoundTicksAroundTheData) {
   }
 }
 
+// Ticks a narrow range apart got the same label (0.14, 0.14) at two fixed decimals.
 TEST(Chart, TickLabelsAreDistinctCloseToTheirValuesAndNoLongerThanNeeded) {
   auto ticks = [](double lo, double hi, int n) {
     std::vector<double> t;
