@@ -24,7 +24,7 @@ struct TrainArgs {
   std::string scene, out, preset = "fast";
   int holdout = 0, iterations = 0, max_width = 0;
   size_t max_gaussians = 0;
-  float densify_threshold = 2e-4f;
+  float densify_threshold = 2e-4f, ssim_weight = 0;
   bool no_exposure = false, no_pose = false;
   uint64_t seed = 1;
 };
@@ -44,6 +44,7 @@ int run_train(const TrainArgs& a) {
   o.max_width = a.max_width;
   o.max_gaussians = a.max_gaussians;
   o.densify_threshold = a.densify_threshold;
+  o.ssim_weight = a.ssim_weight;
   o.exposure = !a.no_exposure;
   o.pose_refinement = !a.no_pose;
   o.seed = a.seed;
@@ -170,13 +171,15 @@ void add_radiance_commands(CLI::App& app, int& result) {
                                             "prints a JSON report");
   train->add_option("--scene", ta->scene, "scene directory")->required();
   train->add_option("--out", ta->out, "model file to write")->required();
-  train->add_option("--preset", ta->preset, "draft (a quick look), fast (up to 1500 iterations: about 7.5 min on 2 cores for the demo scene) or quality")->check(CLI::IsMember(preset_names()));
+  train->add_option("--preset", ta->preset, "draft (a quick look), fast (up to 1500 iterations: 7-8 min on 2 cores for the demo scene) or quality")->check(CLI::IsMember(preset_names()));
   train->add_option("--holdout", ta->holdout, "hold out frames with index % N == N/2 for evaluation (0: none)")->check(CLI::Range(0, 1000));
   train->add_option("--iterations", ta->iterations, "at most this many iterations (default: the preset's)")->check(CLI::Range(1, 1000000));
   train->add_option("--max-width", ta->max_width, "downscale wider images to this width (default: the preset's)")->check(CLI::Range(16, 8192));
   train->add_option("--max-gaussians", ta->max_gaussians, "at most this many Gaussians (default: the preset's)");
   train->add_option("--densify-threshold", ta->densify_threshold, "screen-space gradient (NDC) that makes a Gaussian grow")
       ->check(CLI::PositiveNumber);
+  train->add_option("--ssim-weight", ta->ssim_weight, "D-SSIM's share of the image loss, (1 - w) L1 + w (1 - SSIM); 0.2 as in 3D Gaussian splatting (default 0: L1)")
+      ->check(CLI::Range(0.0f, 1.0f));
   train->add_flag("--no-exposure", ta->no_exposure, "ablation: ignore exposure_s and learn no exposure corrections");
   train->add_flag("--no-pose-refinement", ta->no_pose, "ablation: trust the recorded camera poses");
   train->add_option("--seed", ta->seed, "random seed");

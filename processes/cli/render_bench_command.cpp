@@ -216,7 +216,7 @@ int run_nvs(const NvsArgs& a) {
     render::gs::TrainOptions o;
     o.holdout = a.holdout;
     o.max_width = a.max_width;
-    // "<preset>[-<iterations>][-no-exposure][-no-pose-refinement]"
+    // "<preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim]"
     std::string rest = name;
     auto take = [&](const std::string& suffix) {
       const size_t at = rest.find(suffix);
@@ -226,6 +226,7 @@ int run_nvs(const NvsArgs& a) {
     };
     o.exposure = !take("-no-exposure");
     o.pose_refinement = !take("-no-pose-refinement");
+    if (take("-dssim")) o.ssim_weight = 0.2f;
     const size_t dash = rest.find('-');
     o.preset = rest.substr(0, dash);
     if (dash != std::string::npos) o.max_iterations = std::stoi(rest.substr(dash + 1));
@@ -270,7 +271,7 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   nvs->add_option("--scene", na->scene, "scene directory");
   nvs->add_option("--redraw", na->redraw, "only draw the charts again from this report (no training)")->check(CLI::ExistingFile);
   nvs->add_option("--out", na->out, "JSON report (default bench/results/nvs-<scene>.json; PNG charts beside it)");
-  nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement]");
+  nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim] (-dssim: 0.2 D-SSIM in the loss)");
   nvs->add_option("--holdout", na->holdout, "hold out frames with index % N == N/2");
   nvs->add_option("--max-width", na->max_width, "downscale wider images to this width");
   nvs->callback([na, &result] { result = run_nvs(*na); });

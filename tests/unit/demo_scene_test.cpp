@@ -63,6 +63,25 @@ class DemoScene : public ::testing::Test {
 fs::path* DemoScene::dir_ = nullptr;
 render::demo::DemoReport DemoScene::report_;
 
+// D-SSIM in the loss (TrainOptions::ssim_weight) takes effect and keeps training finite.
+TEST_F(DemoScene, TrainingWithDssimStaysFiniteAndDiffersFromL1) {
+  const auto s = scene::load_scene(*dir_);
+  auto trained = [&](float weight) {
+    render::gs::TrainOptions t;
+    t.preset = "draft";
+    t.max_iterations = 40;
+    t.ssim_weight = weight;
+    render::gs::TrainReport report;
+    auto model = render::gs::train(s, t, &report);
+    EXPECT_EQ(report.iterations, 40);
+    EXPECT_TRUE(std::isfinite(report.train_psnr));
+    EXPECT_EQ(std::count_if(model.gaussians.p.begin(), model.gaussians.p.end(), [](float v) { return !std::isfinite(v); }), 0);
+    return model;
+  };
+  const auto l1 = trained(0), mixed = trained(0.2f);
+  EXPECT_NE(l1.gaussians.p, mixed.gaussians.p);
+}
+
 TEST_F(DemoScene, IsAValidSceneWithImagesLidarAndDifferentExposures) {
   const auto s = scene::load_scene(*dir_);  // checks every image and LiDAR file exists
   EXPECT_FALSE(s.layout_only);
