@@ -171,7 +171,7 @@ void add_radiance_commands(CLI::App& app, int& result) {
                                             "prints a JSON report");
   train->add_option("--scene", ta->scene, "scene directory")->required();
   train->add_option("--out", ta->out, "model file to write")->required();
-  train->add_option("--preset", ta->preset, "draft (a quick look), fast (up to 1500 iterations: 7-8 min on 2 cores for the demo scene) or quality")->check(CLI::IsMember(preset_names()));
+  train->add_option("--preset", ta->preset, "draft (a quick look), fast (up to 1800 iterations: about 8 min on 2 cores for the demo scene) or quality")->check(CLI::IsMember(preset_names()));
   train->add_option("--holdout", ta->holdout, "hold out frames with index % N == N/2 for evaluation (0: none)")->check(CLI::Range(0, 1000));
   train->add_option("--iterations", ta->iterations, "at most this many iterations (default: the preset's)")->check(CLI::Range(1, 1000000));
   train->add_option("--max-width", ta->max_width, "downscale wider images to this width (default: the preset's)")->check(CLI::Range(16, 8192));

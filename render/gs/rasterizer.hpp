@@ -63,9 +63,9 @@ class Rasterizer {
     float u, v, z;          // pixel position and camera depth
     float a, b, c;          // conic (inverse 2D covariance)
     float opacity;          // sigmoid of the logit
-    float log_cut;          // power below which the weight is under min_alpha
+    float log_cut;          // power below which it is cut: weight under min_alpha, or beyond extent_sigma
     float rgb[3];           // linear radiance toward this camera
-    int radius;
+    float rx, ry;           // half-width and half-height (pixels) of the box around that cut's ellipse
   };
   GsView view_;
   std::vector<Proj> proj_;

@@ -2,6 +2,8 @@
 // the pose's), and its images against what a Gaussian must look like.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <random>
 
 #include "render/gs/rasterizer.hpp"
@@ -202,6 +204,48 @@ TEST(GsRasterizer, OneOpaqueGaussianLooksLikeAGaussianInFrontOfTheSky) {
   EXPECT_NEAR(c, 0.9f * 2 * std::exp(-0.5f * (0.25f + 0.25f) / (0.04f * 100 + 0.3f)) + 0.5f * (1 - 0.9f * std::exp(-0.5f * 0.5f / 4.3f)), 0.02);
   EXPECT_NEAR(img.radiance.at<cv::Vec3f>(0, 0)[1], 0.5f, 1e-4f);  // far corner: sky only
   EXPECT_NEAR(img.depth.at<float>(14, 19) / img.alpha.at<float>(14, 19), 4.0f, 1e-3f);
+}
+
+TEST(GsRasterizer, AThinTiltedGaussianCoversExactlyItsCutEllipseAcrossTiles) {
+  // Footprints much longer than wide, tilted and crossing tile borders: the pixel loops walk
+  // each row's span of the ellipse only, so a span cut short would leave pixels empty (at 8 deg
+  // a row's span is over 8 pixels long: halving it fails this test).
+  for (const float degrees : {8.0f, 30.0f}) {
+    SCOPED_TRACE(degrees);
+    GsView v;
+    v.width = 64, v.height = 48;
+    v.fx = v.fy = 40;
+    v.cx = 31.3f, v.cy = 15.8f;
+    const float theta = degrees * std::numbers::pi_v<float> / 180, z = 4, opacity = 0.9f;
+    Gaussians g;
+    g.add({0, 0, z}, 0.5f, {0, 0, 0}, opacity);
+    float* p = g.at(0);
+    p[kScaleY] = std::log(0.02f), p[kScaleZ] = std::log(0.02f);
+    p[kRotW] = std::cos(theta / 2), p[kRotX] = 0, p[kRotY] = 0, p[kRotZ] = std::sin(theta / 2);
+    Rasterizer r;
+    const GsImage img = r.forward(g, nullptr, v);
+    // On the optical axis the footprint is (f / z)^2 R diag(0.5^2, 0.02^2) R^T plus 0.3 px^2.
+    const Eigen::Matrix2f R = Eigen::Rotation2Df(theta).toRotationMatrix();
+    const float k = v.fx / z;
+    const Eigen::Matrix2f S = k * k * R * Eigen::Vector2f(0.25f, 0.0004f).asDiagonal() * R.transpose() + 0.3f * Eigen::Matrix2f::Identity();
+    const Eigen::Matrix2f conic = S.inverse();
+    int inside = 0, covered = 0;
+    float worst = 0;
+    for (int y = 0; y < v.height; ++y)
+      for (int x = 0; x < v.width; ++x) {
+        const Eigen::Vector2f d(float(x) - v.cx, float(y) - v.cy);
+        const float q = d.dot(conic * d);
+        if (std::abs(q - 9) < 0.05f) continue;  // on the cut itself rounding may go either way
+        // Cut at 3 deviations (extent_sigma): this opacity stays above min_alpha further out.
+        const float want = q <= 9 ? opacity * std::exp(-0.5f * q) : 0.0f;
+        const float got = img.alpha.at<float>(y, x);
+        inside += want > 0, covered += got > 0;
+        worst = std::max(worst, std::abs(got - want));
+      }
+    EXPECT_GT(inside, 60);  // about 30 px long: it reaches into four tiles
+    EXPECT_EQ(covered, inside);
+    EXPECT_LT(worst, 1e-5f);
+  }
 }
 
 }  // namespace
