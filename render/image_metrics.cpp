@@ -19,6 +19,8 @@ double psnr(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
   return mse <= 0 ? std::numeric_limits<double>::infinity() : 10 * std::log10(255.0 * 255.0 / mse);
 }
 
+void ssim_window_mean(const cv::Mat& in, cv::Mat& out) { cv::GaussianBlur(in, out, cv::Size(11, 11), 1.5, 1.5, cv::BORDER_REFLECT); }
+
 double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
   if (a.size() != b.size() || a.type() != b.type()) throw std::invalid_argument("ssim: images differ in size or type");
   const double c1 = std::pow(0.01 * 255, 2), c2 = std::pow(0.03 * 255, 2);
@@ -27,7 +29,7 @@ double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask) {
   b.convertTo(y, CV_32F);
   auto blur = [](const cv::Mat& m) {
     cv::Mat o;
-    cv::GaussianBlur(m, o, cv::Size(11, 11), 1.5, 1.5, cv::BORDER_REFLECT);
+    ssim_window_mean(m, o);
     return o;
   };
   const cv::Mat mx = blur(x), my = blur(y);

@@ -8,4 +8,8 @@ namespace chatsim::render {
 double psnr(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask = cv::Mat());
 double ssim(const cv::Mat& a, const cv::Mat& b, const cv::Mat& mask = cv::Mat());
 
+// SSIM's window: the local means it takes (an 11 x 11 Gaussian, sigma 1.5, reflected at the
+// border). Shared with the training loss (gs::SsimLoss) so the two measure the same thing.
+void ssim_window_mean(const cv::Mat& in, cv::Mat& out);
+
 }  // namespace chatsim::render

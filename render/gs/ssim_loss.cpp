@@ -1,11 +1,11 @@
 #include "render/gs/ssim_loss.hpp"
 
-#include <opencv2/imgproc.hpp>
+#include "render/image_metrics.hpp"
 
 namespace chatsim::render::gs {
 namespace {
 
-void blur(const cv::Mat& m, cv::Mat& out) { cv::GaussianBlur(m, out, cv::Size(11, 11), 1.5, 1.5, cv::BORDER_REFLECT); }
+void blur(const cv::Mat& m, cv::Mat& out) { ssim_window_mean(m, out); }
 
 }  // namespace
 
