@@ -55,6 +55,38 @@ std::pair<double, double> nice_axis(double lo, double hi, int divisions) {
   return {lo, hi};
 }
 
+std::vector<PixelRect> place_labels(const std::vector<std::pair<int, int>>& at, const std::vector<std::pair<int, int>>& text,
+                                    const PixelRect& area) {
+  const auto overlap = [](const PixelRect& a, const PixelRect& b) {
+    const int w = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x), h = std::min(a.y + a.h, b.y + b.h) - std::max(a.y, b.y);
+    return w > 0 && h > 0 ? long(w) * h : 0L;
+  };
+  constexpr int kMarker = 7, kGap = 4;
+  std::vector<PixelRect> placed;
+  for (size_t i = 0; i < at.size(); ++i) {
+    const auto [cx, cy] = at[i];
+    const auto [tw, th] = text[i];
+    // Right, then left, of the marker: level with it, above, below, then further away.
+    const int xs[] = {cx + kMarker + kGap, cx - kMarker - kGap - tw};
+    const int ys[] = {cy - th / 2, cy - kMarker - th, cy + kMarker, cy - kMarker - 2 * th - kGap, cy + kMarker + th + kGap};
+    PixelRect best;
+    long best_cost = -1;
+    for (const int x : xs)
+      for (const int y : ys) {
+        const PixelRect r{x, y, tw, th};
+        long cost = 0;
+        for (const auto& other : placed) cost += overlap(r, other);
+        for (const auto& [mx, my] : at) cost += overlap(r, {mx - kMarker, my - kMarker, 2 * kMarker + 1, 2 * kMarker + 1});
+        // Outside the plot costs more than any overlap inside it.
+        const long outside = long(tw) * th - overlap(r, area);
+        cost += outside * 1000;
+        if (best_cost < 0 || cost < best_cost) best = r, best_cost = cost;
+      }
+    placed.push_back(best);
+  }
+  return placed;
+}
+
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& pts) {
   const int w = 900, h = 600, left = 90, right = 40, top = 60, bottom = 80;
   cv::Mat img(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
@@ -108,14 +140,19 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   cv::rotate(ylabel, ylabel, cv::ROTATE_90_COUNTERCLOCKWISE);
   ylabel.copyTo(img(cv::Rect(5, top, 30, h - top - bottom)));
   const cv::Scalar colors[] = {{200, 80, 30}, {30, 140, 40}, {30, 60, 200}, {160, 40, 160}, {20, 150, 200}, {90, 90, 90}};
-  for (size_t i = 0; i < pts.size(); ++i) {
-    const cv::Point c(px(pts[i].x), py(pts[i].y));
-    cv::circle(img, c, 6, colors[i % 6], cv::FILLED, cv::LINE_AA);
+  std::vector<std::pair<int, int>> at, sizes;
+  for (const auto& p : pts) {
     int baseline = 0;
-    const cv::Size text = cv::getTextSize(pts[i].label, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline);
-    // Labels near the right edge go on the point's left, so none is cut off.
-    const int dx = c.x + 9 + text.width > w - 5 ? -9 - text.width : 9;
-    cv::putText(img, pts[i].label, c + cv::Point(dx, -8 + int(i % 3) * 12), cv::FONT_HERSHEY_SIMPLEX, 0.45, colors[i % 6], 1,
+    const cv::Size text = cv::getTextSize(p.label, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline);
+    at.emplace_back(px(p.x), py(p.y));
+    sizes.emplace_back(text.width, text.height + baseline);
+  }
+  const std::vector<PixelRect> labels = place_labels(at, sizes, {left, top, w - left - 5, h - top - bottom});
+  for (size_t i = 0; i < pts.size(); ++i) {
+    cv::circle(img, {at[i].first, at[i].second}, 6, colors[i % 6], cv::FILLED, cv::LINE_AA);
+    int baseline = 0;
+    cv::getTextSize(pts[i].label, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline);
+    cv::putText(img, pts[i].label, {labels[i].x, labels[i].y + labels[i].h - baseline}, cv::FONT_HERSHEY_SIMPLEX, 0.45, colors[i % 6], 1,
                 cv::LINE_AA);
   }
   std::filesystem::create_directories(std::filesystem::absolute(file).parent_path());

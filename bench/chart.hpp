@@ -29,6 +29,17 @@ std::pair<double, double> nice_axis(double lo, double hi, int divisions);
 // 0.12), each close to its true value (17.04 rather than 17.0), and no more (3, 6, 9).
 int tick_decimals(const std::vector<double>& ticks);
 
+// A rectangle in image pixels (x, y: its top left corner).
+struct PixelRect {
+  int x = 0, y = 0, w = 0, h = 0;
+};
+
+// Where each point's label goes: beside its marker (centres `at`, text sizes `text` as w, h),
+// on the first side where it overlaps no label placed before it and no marker and stays inside
+// `area`; where no side is free, the one overlapping least. Returns the labels' rectangles.
+std::vector<PixelRect> place_labels(const std::vector<std::pair<int, int>>& at, const std::vector<std::pair<int, int>>& text,
+                                    const PixelRect& area);
+
 // Writes a PNG; throws std::runtime_error when it cannot.
 void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec, const std::vector<ChartPoint>& points);
 

@@ -18,6 +18,7 @@
 #include "processes/cli/train_progress.hpp"
 #include "render/gs/model.hpp"
 #include "render/gs/nvs_eval.hpp"
+#include "render/gs/train_config_name.hpp"
 #include "render/gs/trainer.hpp"
 #include "render/inpaint/deletion_eval.hpp"
 #include "render/inpaint/moved_view_eval.hpp"
@@ -209,27 +210,25 @@ int run_nvs(const NvsArgs& a) {
     std::cerr << "bench nvs: --scene is required (or --redraw REPORT)\n";
     return exit_code::kUsage;
   }
+  // Every name is checked before the first one trains (a typo would otherwise end a long run).
+  std::vector<render::gs::TrainOptions> options;
+  for (const auto& name : a.configs) {
+    render::gs::TrainOptions base;
+    base.holdout = a.holdout;
+    base.max_width = a.max_width;
+    try {
+      options.push_back(render::gs::parse_train_config_name(name, base));
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "bench nvs: --configs: " << e.what() << "\n";
+      return exit_code::kUsage;
+    }
+  }
   const auto s = scene::load_scene(a.scene);
   const std::string out = a.out.empty() ? "bench/results/nvs-" + s.name + ".json" : a.out;
   json runs = json::array(), ceiling;
-  for (const auto& name : a.configs) {
-    render::gs::TrainOptions o;
-    o.holdout = a.holdout;
-    o.max_width = a.max_width;
-    // "<preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim]"
-    std::string rest = name;
-    auto take = [&](const std::string& suffix) {
-      const size_t at = rest.find(suffix);
-      if (at == std::string::npos) return false;
-      rest.erase(at, suffix.size());
-      return true;
-    };
-    o.exposure = !take("-no-exposure");
-    o.pose_refinement = !take("-no-pose-refinement");
-    if (take("-dssim")) o.ssim_weight = 0.2f;
-    const size_t dash = rest.find('-');
-    o.preset = rest.substr(0, dash);
-    if (dash != std::string::npos) o.max_iterations = std::stoi(rest.substr(dash + 1));
+  for (size_t k = 0; k < a.configs.size(); ++k) {
+    const std::string& name = a.configs[k];
+    render::gs::TrainOptions o = options[k];
     std::cerr << "bench nvs: " << name << "...\n";
     ProgressBar bar("train " + name);
     o.progress = train_progress(bar);

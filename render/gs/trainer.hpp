@@ -16,8 +16,9 @@ namespace chatsim::render::gs {
 // start at the ego pose of their own timestamp, so earlier pose corrections no longer fit;
 // 3: calibration refined from 2 % of training, moving shadows left out of it: better poses;
 // 4: `fast` trains 1500 iterations, not 1000; 5: cameras' translations learn at a tenth of the
-// rate; 6: `fast` trains 1800). Caches of trained models key on it.
-inline constexpr int kTrainerVersion = 6;
+// rate; 6: `fast` trains 1800; 7: colour's rates fall tenfold over training). Caches of trained
+// models key on it.
+inline constexpr int kTrainerVersion = 7;
 
 struct TrainOptions {
   std::string preset = "fast";      // draft | fast | quality

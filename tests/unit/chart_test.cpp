@@ -116,3 +116,34 @@ TEST(Chart, TickLabelsAreDistinctCloseToTheirValuesAndNoLongerThanNeeded) {
 }
 
 }  // namespace
+
+namespace {
+bool intersects(const chatsim::bench::PixelRect& a, const chatsim::bench::PixelRect& b) {
+  return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+bool inside(const chatsim::bench::PixelRect& r, const chatsim::bench::PixelRect& area) {
+  return r.x >= area.x && r.y >= area.y && r.x + r.w <= area.x + area.w && r.y + r.h <= area.y + area.h;
+}
+}  // namespace
+
+// Two configurations that score alike sit side by side: their labels must not cover each other
+// (fast-600 and fast-600-dssim did), nor the markers, nor leave the plot.
+TEST(Chart, LabelsOfNearbyPointsDoNotOverlap) {
+  using chatsim::bench::PixelRect;
+  const PixelRect area{90, 60, 805, 460};
+  const std::vector<std::pair<int, int>> at{{280, 200}, {318, 194}, {278, 236}, {700, 175}, {890, 300}};
+  const std::vector<std::pair<int, int>> text{{70, 14}, {120, 14}, {230, 14}, {40, 14}, {60, 14}};
+  const auto labels = chatsim::bench::place_labels(at, text, area);
+  ASSERT_EQ(labels.size(), at.size());
+  for (size_t i = 0; i < labels.size(); ++i) {
+    EXPECT_EQ(labels[i].w, text[i].first);
+    EXPECT_TRUE(inside(labels[i], area)) << i;
+    for (size_t j = 0; j < i; ++j) EXPECT_FALSE(intersects(labels[i], labels[j])) << i << " and " << j;
+    for (const auto& [x, y] : at) EXPECT_FALSE(intersects(labels[i], {x - 6, y - 6, 13, 13})) << i;
+  }
+  // A lone point's label sits level with it, on its right.
+  EXPECT_EQ(labels[3].x, 700 + 11);
+  EXPECT_EQ(labels[3].y, 175 - 7);
+  // At the plot's right edge it goes to the left.
+  EXPECT_LT(labels[4].x + labels[4].w, 890);
+}
