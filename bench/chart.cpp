@@ -141,19 +141,20 @@ void write_scatter_png(const std::filesystem::path& file, const ChartSpec& spec,
   ylabel.copyTo(img(cv::Rect(5, top, 30, h - top - bottom)));
   const cv::Scalar colors[] = {{200, 80, 30}, {30, 140, 40}, {30, 60, 200}, {160, 40, 160}, {20, 150, 200}, {90, 90, 90}};
   std::vector<std::pair<int, int>> at, sizes;
+  std::vector<int> baselines;
   for (const auto& p : pts) {
     int baseline = 0;
     const cv::Size text = cv::getTextSize(p.label, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline);
     at.emplace_back(px(p.x), py(p.y));
     sizes.emplace_back(text.width, text.height + baseline);
+    baselines.push_back(baseline);
   }
+  // Labels may reach into the right margin, not past the image.
   const std::vector<PixelRect> labels = place_labels(at, sizes, {left, top, w - left - 5, h - top - bottom});
   for (size_t i = 0; i < pts.size(); ++i) {
     cv::circle(img, {at[i].first, at[i].second}, 6, colors[i % 6], cv::FILLED, cv::LINE_AA);
-    int baseline = 0;
-    cv::getTextSize(pts[i].label, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline);
-    cv::putText(img, pts[i].label, {labels[i].x, labels[i].y + labels[i].h - baseline}, cv::FONT_HERSHEY_SIMPLEX, 0.45, colors[i % 6], 1,
-                cv::LINE_AA);
+    cv::putText(img, pts[i].label, {labels[i].x, labels[i].y + labels[i].h - baselines[i]}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                colors[i % 6], 1, cv::LINE_AA);
   }
   std::filesystem::create_directories(std::filesystem::absolute(file).parent_path());
   if (!cv::imwrite(file.string(), img)) throw std::runtime_error("could not write the chart " + file.string());
