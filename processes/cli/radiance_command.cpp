@@ -49,7 +49,7 @@ int run_train(const TrainArgs& a) {
   o.pose_refinement = !a.no_pose;
   o.seed = a.seed;
   ProgressBar bar("train");
-  o.progress = train_progress(bar);
+  o.progress = train_progress(bar, o.coarse_share);
   try {
     render::gs::TrainReport r;
     const auto model = render::gs::train(s, o, &r);

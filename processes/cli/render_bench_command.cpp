@@ -231,7 +231,7 @@ int run_nvs(const NvsArgs& a) {
     render::gs::TrainOptions o = options[k];
     std::cerr << "bench nvs: " << name << "...\n";
     ProgressBar bar("train " + name);
-    o.progress = train_progress(bar);
+    o.progress = train_progress(bar, o.coarse_share);
     render::gs::TrainReport tr;
     const auto model = render::gs::train(s, o, &tr);
     bar.finish();

@@ -153,7 +153,7 @@ void add_scene_command(CLI::App& app, int& result) {
       ->check(CLI::IsMember({"default", "small"}));
   demo->add_option("--spp", demo_args->spp, "path-tracing samples per pixel of the captured images")->check(CLI::Range(1, 4096));
   demo->add_option("--truth-spp", demo_args->truth_spp,
-                   "samples per pixel of the ground-truth views (default: the preset's, 64, or twice --spp; fewer leave "
+                   "samples per pixel of the ground-truth views (default: the preset's, 256, or twice --spp; fewer leave "
                    "path-tracing noise in them, which lowers any model's score against them)")
       ->check(CLI::Range(1, 4096));
   demo->add_flag("--overcast", demo_args->overcast, "an overcast sky (no sun) instead of a clear one");

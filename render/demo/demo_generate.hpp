@@ -25,8 +25,9 @@ struct DemoRenderOptions {
   int spp = 4;                  // captured images
   int max_depth = 2;
   // Ground-truth views (no sensor noise; denoised). At 6 samples they kept enough path-tracing
-  // noise to cost a model scored against them 1.8 dB and 0.18 SSIM (seed 1, 2026-12-03).
-  int truth_spp = 64;
+  // noise to cost a model scored against them 1.8 dB and 0.18 SSIM (seed 1, 2026-12-03); at 64,
+  // 0.3 dB and 0.037 SSIM next to 256 samples (2026-12-04), which take 64 s a view on 2 cores.
+  int truth_spp = 256;
   // Per camera (front, front_left, front_right): exposure relative to the automatic one, and
   // when each fires relative to its frame.
   std::vector<double> exposure_scale{1.0, 1.3, 0.8};
