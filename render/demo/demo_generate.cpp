@@ -196,7 +196,7 @@ DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_d
       truth_count += n_cams * int(o.shifts.size());
   }
   // Progress in units of one captured image with its plates: a view costs about a third of
-  // its sample ratio (seed 1, 2 cores: 3.1 s per captured image at 4 samples, 16 s per view at
+  // its sample ratio (seed 1, 2 cores: about 3 s per captured image at 4 samples, 16 s per view at
   // 64, 64 s at 256), so the ETA holds through the views.
   const double view_cost = std::max(1.0, double(o.truth_spp) / double(std::max(1, o.spp)) / 3);
   const double total = n_frames * n_cams + (o.truth_views ? view_cost * truth_count : 0.0) + (o.lidar ? 0.3 * n_frames : 0.0);

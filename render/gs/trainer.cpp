@@ -600,7 +600,7 @@ RadianceField train(const scene::Scene& s, const TrainOptions& o, TrainReport* r
     if (o.pose_refinement) pose = pose * model.camera_correction[im.camera].transform() * model.image_correction[key].transform();
     model.place(s, im.time, {}, placed, &source);
     // Coarse to fine: half resolution for the first part of training (a quarter of the pixels).
-    const bool coarse = it <= int(o.coarse_share * float(iterations)) && im.cam.width >= 128;
+    const bool coarse = it <= coarse_iterations(iterations, o.coarse_share) && im.cam.width >= 128;
     const scene::Camera cam = coarse ? scaled_camera(im.cam, im.cam.width / 2) : im.cam;
     cv::Mat coarse_rgb;
     if (coarse) cv::resize(im.rgb, coarse_rgb, cv::Size(cam.width, cam.height), 0, 0, cv::INTER_AREA);

@@ -56,12 +56,15 @@ struct TrainReport {
   int width = 0, height = 0;       // the training resolution
 };
 
+// How many of `total` iterations train at half resolution (the first ones).
+inline int coarse_iterations(int total, float coarse_share) { return int(coarse_share * float(total)); }
+
 // Share of training's work done after `it` of `total` iterations, for a progress bar's ETA: a
 // coarse iteration (a quarter of the pixels) took 0.55 of a full one (demo scene, 2026-12-04:
 // 0.18 s against 0.31), so counting iterations promised the end too early.
 inline double training_work_done(int it, int total, float coarse_share) {
   constexpr double kCoarseCost = 0.55;
-  const int coarse = int(coarse_share * float(total));
+  const int coarse = coarse_iterations(total, coarse_share);
   auto work = [&](int i) { return kCoarseCost * std::min(i, coarse) + std::max(0, i - coarse); };
   return total > 0 && work(total) > 0 ? std::min(1.0, work(it) / work(total)) : 1.0;
 }
