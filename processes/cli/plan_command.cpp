@@ -14,6 +14,7 @@
 #include "common/util/clock.hpp"
 #include "common/util/exit_codes.hpp"
 #include "common/util/log.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "processes/agent_liveness.hpp"
 #include "processes/agent_process.hpp"
@@ -39,7 +40,7 @@ int run_plan(const PlanArgs& a) {
     spdlog::error("{}", e.what());
     return exit_code::kUsage;
   }
-  try {
+  return exit_code_of([&] {
     ProcessGraph graph(a.bus, {"manager", "view", "deletion", "asset", "motion"});
     bus::NodeOptions o;
     o.name = "plan-" + std::to_string(getpid());
@@ -82,13 +83,7 @@ int run_plan(const PlanArgs& a) {
     node.shutdown();
     std::cout << nlohmann::json::parse(edit).dump(1) << std::endl;
     return exit_code::kOk;
-  } catch (const bus::BusError& e) {
-    spdlog::error("{}", e.what());
-    return exit_code::kBusUnavailable;
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return exit_code::kFailure;
-  }
+  }, log_error);
 }
 
 }  // namespace

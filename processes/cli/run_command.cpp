@@ -19,6 +19,7 @@
 #include "common/util/progress.hpp"
 #include "processes/agent_liveness.hpp"
 #include "processes/agent_process.hpp"
+#include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "processes/cli/chat_session.hpp"
 #include "processes/cli/process_graph.hpp"
@@ -53,7 +54,7 @@ int run_run(const RunArgs& a) {
   init_logging("run");
   const std::string scene_dir = fs::absolute(a.scene).lexically_normal().string();
   if (!check_scene(scene_dir)) return exit_code::kUsage;
-  try {
+  return exit_code_of([&] {
     ChatSession session(a.bus, scene_dir, a.conversation);
     // Every round but the last only decides; the last is rendered.
     for (size_t i = 0; i < a.rounds.size(); ++i) {
@@ -67,13 +68,7 @@ int run_run(const RunArgs& a) {
       if (!r.output_dir.empty()) std::cout << "video: " << (fs::path(r.output_dir) / "video.mp4").string() << std::endl;
     }
     return exit_code::kOk;
-  } catch (const bus::BusError& e) {
-    spdlog::error("{}", e.what());
-    return exit_code::kBusUnavailable;
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return exit_code::kFailure;
-  }
+  }, log_error);
 }
 
 struct ChatArgs {
@@ -86,7 +81,7 @@ int run_chat(const ChatArgs& a) {
   init_logging("chat");
   const std::string scene_dir = fs::absolute(a.scene).lexically_normal().string();
   if (!check_scene(scene_dir)) return exit_code::kUsage;
-  try {
+  return exit_code_of([&] {
     ChatSession session(a.bus, scene_dir, "");
     std::cerr << "chatsim chat: one command per line; each round's result goes to " << a.out_root
               << "/round-N; 'quit' ends.\n";
@@ -108,13 +103,7 @@ int run_chat(const ChatArgs& a) {
       if (!r.output_dir.empty()) std::cout << "video: " << (fs::path(r.output_dir) / "video.mp4").string() << std::endl;
     }
     return exit_code::kOk;
-  } catch (const bus::BusError& e) {
-    spdlog::error("{}", e.what());
-    return exit_code::kBusUnavailable;
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return exit_code::kFailure;
-  }
+  }, log_error);
 }
 
 }  // namespace
