@@ -72,7 +72,7 @@ std::vector<Eigen::Vector3d> offset_line(const std::vector<Eigen::Vector3d>& lin
 
 }  // namespace
 
-scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, const Progress& progress) {
+scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, const Progress& progress, std::map<int, FrameLevel>* levels) {
   const fs::path tables = o.dataroot / o.version;
   const json scenes = read_table(tables, "scene");
   const auto samples = by_token(read_table(tables, "sample"));
@@ -139,7 +139,6 @@ scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, cons
   const fs::path tmp = out.string() + ".tmp";
   fs::remove_all(tmp);
   fs::create_directories(tmp);
-  std::vector<Eigen::Vector3d> ego_path;
   const int total = int(sample_tokens.size());
   for (size_t f = 0; f < sample_tokens.size(); ++f) {
     const auto& sd = by_sample.at(sample_tokens[f]);
@@ -148,7 +147,6 @@ scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, cons
     frame.index = int(f);
     frame.timestamp_s = lidar.at("timestamp").get<double>() * 1e-6 - t0;
     frame.ego_to_world = global_to_world * pose_of(ego_poses.at(lidar.at("ego_pose_token").get<std::string>()));
-    ego_path.push_back(frame.ego_to_world.translation());
     char name[32];
     std::snprintf(name, sizeof name, "%06zu", f);
     for (const auto& cam : s.cameras) {
@@ -220,6 +218,15 @@ scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, cons
     t.id = "obj_" + std::to_string(++n);
     s.objects.push_back(t);
   }
+  // nuScenes' ego poses have no height: each frame is levelled by its static boxes.
+  std::map<int, FrameLevel> fitted;
+  if (o.level_frames) {
+    fitted = fit_frame_levels(s);
+    apply_frame_levels(s, fitted);
+  }
+  if (levels) *levels = fitted;
+  std::vector<Eigen::Vector3d> ego_path;
+  for (const auto& f : s.frames) ego_path.push_back(f.ego_to_world.translation());
 
   // Colour per vehicle: the median of the central part of its box in the image where it is largest.
   if (o.estimate_colors) {

@@ -1,6 +1,7 @@
 #pragma once
 // Converts one scene of the standard nuScenes tables to our scene format: per-image ego poses
-// (cameras fire at different times), calibration, key-frame LiDAR in each frame's ego frame,
+// (cameras fire at different times; each frame levelled by its static boxes, as nuScenes' ego
+// poses have no height), calibration, key-frame LiDAR in each frame's ego frame,
 // boxes as tracks by instance, an estimated colour per vehicle, and a lane map derived from the
 // ego path (nuScenes data here has no map), marked as derived.
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/import/level_frames.hpp"
 #include "common/scene/scene.hpp"
 
 namespace chatsim::import {
@@ -20,6 +22,7 @@ struct NuScenesOptions {
   std::vector<std::string> cameras = {"CAM_FRONT", "CAM_FRONT_LEFT", "CAM_FRONT_RIGHT"};
   bool lidar = true;
   bool estimate_colors = true;
+  bool level_frames = true;                  // fit each frame's height and tilt to the static boxes (level_frames.hpp)
 };
 
 class ImportError : public std::runtime_error {
@@ -30,8 +33,9 @@ class ImportError : public std::runtime_error {
 // Progress: (done, total, what).
 using Progress = std::function<void(int, int, const std::string&)>;
 
-// Writes the scene to out (through a temporary folder renamed when complete) and returns it.
+// Writes the scene to out (through a temporary folder renamed when complete) and returns it;
+// `levels`, when given, receives the frames' height and tilt corrections (empty: none applied).
 scene::Scene import_nuscenes(const NuScenesOptions& options, const std::filesystem::path& out,
-                             const Progress& progress = {});
+                             const Progress& progress = {}, std::map<int, FrameLevel>* levels = nullptr);
 
 }  // namespace chatsim::import

@@ -1,4 +1,6 @@
 // chatsim scene info: validate a scene directory and summarise it.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -104,7 +106,7 @@ struct ImportArgs {
   import::NuScenesOptions options;
   std::string cameras;
   std::string out;
-  bool no_lidar = false;
+  bool no_lidar = false, no_level = false;
 };
 
 int run_import(ImportArgs a) {
@@ -117,15 +119,29 @@ int run_import(ImportArgs a) {
     }
   }
   a.options.lidar = !a.no_lidar;
+  a.options.level_frames = !a.no_level;
   return exit_code_of([&] {
-    const auto s = import::import_nuscenes(a.options, a.out, [](int done, int total, const std::string& what) {
-      std::cerr << "\r  " << what << " " << done << "/" << total << std::flush;
-      if (done == total) std::cerr << "\n";
-    });
+    std::map<int, import::FrameLevel> levels;
+    const auto s = import::import_nuscenes(
+        a.options, a.out,
+        [](int done, int total, const std::string& what) {
+          std::cerr << "\r  " << what << " " << done << "/" << total << std::flush;
+          if (done == total) std::cerr << "\n";
+        },
+        &levels);
     int colored = 0;
     for (const auto& o : s.objects) colored += o.color_rgb ? 1 : 0;
     std::cout << "wrote " << a.out << ": " << s.frames.size() << " frames, " << s.cameras.size() << " cameras, "
               << s.objects.size() << " objects (" << colored << " with an estimated colour), lanes derived from the ego path\n";
+    if (!levels.empty()) {
+      double lo = 0, hi = 0, tilt = 0;
+      for (const auto& [frame, l] : levels)
+        lo = std::min(lo, l.height), hi = std::max(hi, l.height), tilt = std::max(tilt, std::hypot(l.slope_x, l.slope_y));
+      std::cout << "levelled by the static boxes: frame heights " << lo << " to " << hi << " m, tilt up to "
+                << std::atan(tilt) * 180 / M_PI << " deg\n";
+    } else if (a.options.level_frames) {
+      std::cout << "not levelled: too few static boxes\n";
+    }
     return exit_code::kOk;
   });
 }
@@ -178,6 +194,8 @@ void add_scene_command(CLI::App& app, int& result) {
   nus->add_option("--cameras", import_args->cameras, "comma-separated channels (default CAM_FRONT,CAM_FRONT_LEFT,CAM_FRONT_RIGHT)");
   nus->add_option("--out", import_args->out, "output scene directory (replaced)")->required();
   nus->add_flag("--no-lidar", import_args->no_lidar, "skip the LiDAR point clouds");
+  nus->add_flag("--no-level", import_args->no_level,
+                "keep nuScenes' ego poses as they are (all at height 0) instead of levelling each frame by its static boxes");
   nus->callback([import_args, &result] { result = run_import(*import_args); });
 }
 
