@@ -137,8 +137,8 @@ int run_import(ImportArgs a) {
       double lo = 0, hi = 0, tilt = 0;
       for (const auto& [frame, l] : levels)
         lo = std::min(lo, l.height), hi = std::max(hi, l.height), tilt = std::max(tilt, std::hypot(l.slope_x, l.slope_y));
-      std::cout << "levelled by the static boxes: frame heights " << lo << " to " << hi << " m, tilt up to "
-                << std::atan(tilt) * 180 / M_PI << " deg\n";
+      std::cout << std::fixed << std::setprecision(2) << "levelled by the static boxes: frame heights " << lo << " to " << hi
+                << " m, tilt up to " << std::atan(tilt) * 180 / M_PI << " deg\n";
     } else if (a.options.level_frames) {
       std::cout << "not levelled: too few static boxes\n";
     }
@@ -186,8 +186,9 @@ void add_scene_command(CLI::App& app, int& result) {
   auto* import_cmd = scene->add_subcommand("import", "Convert another dataset's scene to ours");
   import_cmd->require_subcommand(1);
   auto import_args = std::make_shared<ImportArgs>();
-  auto* nus = import_cmd->add_subcommand("nuscenes", "One nuScenes scene: per-image ego poses, calibration, key-frame "
-                                                     "LiDAR, boxes as tracks, vehicle colours, lanes derived from the ego path");
+  auto* nus = import_cmd->add_subcommand("nuscenes", "One nuScenes scene: per-image ego poses (each frame levelled by "
+                                                     "its static boxes), calibration, key-frame LiDAR, boxes as tracks, "
+                                                     "vehicle colours, lanes derived from the ego path");
   nus->add_option("--dataroot", import_args->options.dataroot, "folder with <version>/ tables and samples/")->required();
   nus->add_option("--version", import_args->options.version, "table folder, e.g. v1.0-mini");
   nus->add_option("--scene", import_args->options.scene, "scene name, e.g. scene-0916")->required();
