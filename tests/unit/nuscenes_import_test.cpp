@@ -122,7 +122,7 @@ TEST(NuScenesImport, BoxesLandOnTheVehiclesPixels) {
 // nuScenes' ego poses all lie at height 0; levelled by the static boxes, the LiDAR sweeps (not
 // used by that fit) agree on the ground's height: the lowest return per square metre, 3-25 m
 // from the rig, of frames four apart (about 9 m of travel). Unlevelled, they differ by 0.25 m
-// in the median (up to 0.52); levelled, 0.03 (up to 0.08).
+// in the median (up to 0.51); levelled, about 0.03 (up to 0.08).
 TEST(NuScenesImport, LevelledFramesAgreeOnTheGroundsHeight) {
   if (!fs::exists(dataroot())) GTEST_SKIP() << "shared data absent: " << dataroot();
   const auto& s = imported();
