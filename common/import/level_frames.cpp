@@ -55,8 +55,7 @@ std::map<int, FrameLevel> fit_frame_levels(const scene::Scene& s, const LevelOpt
     if (round == kRounds / 2)
       for (auto& b : obs)
         b.used = std::abs(b.center.z() + lift(levels[b.frame], ego[b.frame], b.center.head<2>()) - height[b.object]) < o.outlier_m;
-    std::map<int, std::pair<Eigen::Matrix3d, Eigen::Vector3d>> normal;
-    std::map<int, int> count;
+    std::map<int, std::pair<Eigen::Matrix3d, Eigen::Vector3d>> normal;  // A(0, 0): the frame's boxes
     for (const auto& b : obs) {
       if (!b.used) continue;
       const Eigen::Vector2d d = b.center.head<2>() - ego[b.frame];
@@ -64,15 +63,15 @@ std::map<int, FrameLevel> fit_frame_levels(const scene::Scene& s, const LevelOpt
       auto& [A, y] = normal.try_emplace(b.frame, Eigen::Matrix3d::Zero(), Eigen::Vector3d::Zero()).first->second;
       A += x * x.transpose();
       y += x * (height[b.object] - b.center.z());
-      ++count[b.frame];
     }
     for (auto& [frame, level] : levels) {
-      const int m = count.count(frame) ? count[frame] : 0;
+      const auto it = normal.find(frame);
+      const int m = it == normal.end() ? 0 : int(std::lround(it->second.first(0, 0)));
       if (m < o.min_objects_per_frame) {
         level = {};
         continue;
       }
-      auto [A, y] = normal[frame];
+      auto [A, y] = it->second;
       // A little ridge on the slopes: objects along one line leave the tilt across it open.
       A(1, 1) += m * 1.0, A(2, 2) += m * 1.0;
       const Eigen::Vector3d p = A.ldlt().solve(y);
