@@ -24,7 +24,7 @@ struct TrainArgs {
   std::string scene, out, preset = "fast";
   int holdout = 0, iterations = 0, max_width = 0;
   size_t max_gaussians = 0;
-  float densify_threshold = 2e-4f, ssim_weight = 0;
+  float densify_threshold = 2e-4f, ssim_weight = 0, coarse_share = render::gs::TrainOptions{}.coarse_share;
   bool no_exposure = false, no_pose = false;
   uint64_t seed = 1;
 };
@@ -45,6 +45,7 @@ int run_train(const TrainArgs& a) {
   o.max_gaussians = a.max_gaussians;
   o.densify_threshold = a.densify_threshold;
   o.ssim_weight = a.ssim_weight;
+  o.coarse_share = a.coarse_share;
   o.exposure = !a.no_exposure;
   o.pose_refinement = !a.no_pose;
   o.seed = a.seed;
@@ -179,6 +180,8 @@ void add_radiance_commands(CLI::App& app, int& result) {
   train->add_option("--densify-threshold", ta->densify_threshold, "screen-space gradient (NDC) that makes a Gaussian grow")
       ->check(CLI::PositiveNumber);
   train->add_option("--ssim-weight", ta->ssim_weight, "D-SSIM's share of the image loss, (1 - w) L1 + w (1 - SSIM); 0.2 as in 3D Gaussian splatting (default 0: L1)")
+      ->check(CLI::Range(0.0f, 1.0f));
+  train->add_option("--coarse-share", ta->coarse_share, "share of the iterations trained at half resolution, the first ones (default 0.3)")
       ->check(CLI::Range(0.0f, 1.0f));
   train->add_flag("--no-exposure", ta->no_exposure, "ablation: ignore exposure_s and learn no exposure corrections");
   train->add_flag("--no-pose-refinement", ta->no_pose, "ablation: trust the recorded camera poses");

@@ -270,7 +270,7 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   nvs->add_option("--scene", na->scene, "scene directory");
   nvs->add_option("--redraw", na->redraw, "only draw the charts again from this report (no training)")->check(CLI::ExistingFile);
   nvs->add_option("--out", na->out, "JSON report (default bench/results/nvs-<scene>.json; PNG charts beside it)");
-  nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim] (-dssim: 0.2 D-SSIM in the loss)");
+  nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim][-coarse] (-dssim: 0.2 D-SSIM in the loss; -coarse: 80 % of the iterations at half resolution, not 30 %)");
   nvs->add_option("--holdout", na->holdout, "hold out frames with index % N == N/2");
   nvs->add_option("--max-width", na->max_width, "downscale wider images to this width");
   nvs->callback([na, &result] { result = run_nvs(*na); });

@@ -9,7 +9,7 @@ namespace chatsim::render::gs {
 TrainOptions parse_train_config_name(const std::string& name, TrainOptions o) {
   const auto fail = [&](const std::string& why) {
     return std::invalid_argument("config '" + name + "': " + why +
-                                 " (write <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim], e.g. fast-600-dssim)");
+                                 " (write <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim][-coarse], e.g. fast-600-dssim)");
   };
   std::string rest = name;
   // Switches come off the end, each once, in any order.
@@ -18,12 +18,13 @@ TrainOptions parse_train_config_name(const std::string& name, TrainOptions o) {
     rest.erase(rest.size() - suffix.size());
     return true;
   };
-  bool no_exposure = false, no_pose = false, dssim = false;
+  bool no_exposure = false, no_pose = false, dssim = false, coarse = false;
   for (bool found = true; found;) {
     found = false;
     if (!no_exposure && take("-no-exposure")) no_exposure = found = true;
     if (!no_pose && take("-no-pose-refinement")) no_pose = found = true;
     if (!dssim && take("-dssim")) dssim = found = true;
+    if (!coarse && take("-coarse")) coarse = found = true;
   }
   const size_t dash = rest.find('-');
   const std::string preset = rest.substr(0, dash);
@@ -38,6 +39,7 @@ TrainOptions parse_train_config_name(const std::string& name, TrainOptions o) {
   o.exposure = !no_exposure;
   o.pose_refinement = !no_pose;
   if (dssim) o.ssim_weight = 0.2f;
+  if (coarse) o.coarse_share = kCoarseConfigShare;
   return o;
 }
 

@@ -29,15 +29,18 @@ TEST(TrainConfigName, EachPartSetsItsOption) {
   EXPECT_TRUE(plain.exposure);
   EXPECT_TRUE(plain.pose_refinement);
   EXPECT_EQ(plain.ssim_weight, 0.0f);
+  EXPECT_FLOAT_EQ(plain.coarse_share, TrainOptions{}.coarse_share);
   EXPECT_EQ(plain.holdout, 8);
   EXPECT_EQ(plain.max_width, 800);
 
-  const TrainOptions all = parse_train_config_name("quality-600-no-exposure-no-pose-refinement-dssim", base);
+  const TrainOptions all = parse_train_config_name("quality-600-no-exposure-no-pose-refinement-dssim-coarse", base);
   EXPECT_EQ(all.preset, "quality");
   EXPECT_EQ(all.max_iterations, 600);
   EXPECT_FALSE(all.exposure);
   EXPECT_FALSE(all.pose_refinement);
   EXPECT_FLOAT_EQ(all.ssim_weight, 0.2f);
+  EXPECT_FLOAT_EQ(all.coarse_share, kCoarseConfigShare);
+  EXPECT_NE(kCoarseConfigShare, TrainOptions{}.coarse_share);
 
   // Switches in another order mean the same.
   const TrainOptions swapped = parse_train_config_name("draft-dssim-no-exposure");
@@ -55,6 +58,7 @@ TEST(TrainConfigName, BadNamesAreRefusedWithTheFix) {
   // A switch inside the name, not at its end, is not taken for one.
   EXPECT_NE(error_of("fast-dssim-600").find("'dssim-600' is neither"), std::string::npos);
   EXPECT_NE(error_of("fast-600-dssim-dssim").find("is neither"), std::string::npos);
+  EXPECT_NE(error_of("fast-coarse-600").find("'coarse-600' is neither"), std::string::npos);
   EXPECT_EQ(error_of("fast-600"), "");
   EXPECT_NE(error_of("-dssim").find("unknown preset ''"), std::string::npos);
 }
