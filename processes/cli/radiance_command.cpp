@@ -181,8 +181,9 @@ void add_radiance_commands(CLI::App& app, int& result) {
       ->check(CLI::PositiveNumber);
   train->add_option("--ssim-weight", ta->ssim_weight, "D-SSIM's share of the image loss, (1 - w) L1 + w (1 - SSIM); 0.2 as in 3D Gaussian splatting (default 0: L1)")
       ->check(CLI::Range(0.0f, 1.0f));
-  train->add_option("--coarse-share", ta->coarse_share, "share of the iterations trained at half resolution, the first ones (default 0.3)")
-      ->check(CLI::Range(0.0f, 1.0f));
+  train->add_option("--coarse-share", ta->coarse_share, "share of the iterations trained at half resolution, the first ones")
+      ->check(CLI::Range(0.0f, 1.0f))
+      ->capture_default_str();
   train->add_flag("--no-exposure", ta->no_exposure, "ablation: ignore exposure_s and learn no exposure corrections");
   train->add_flag("--no-pose-refinement", ta->no_pose, "ablation: trust the recorded camera poses");
   train->add_option("--seed", ta->seed, "random seed");

@@ -2,11 +2,13 @@
 // their accuracy, each against a baseline measured in the same run; JSON and a PNG chart in
 // bench/results/.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -270,7 +272,8 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   nvs->add_option("--scene", na->scene, "scene directory");
   nvs->add_option("--redraw", na->redraw, "only draw the charts again from this report (no training)")->check(CLI::ExistingFile);
   nvs->add_option("--out", na->out, "JSON report (default bench/results/nvs-<scene>.json; PNG charts beside it)");
-  nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim][-coarse] (-dssim: 0.2 D-SSIM in the loss; -coarse: 80 % of the iterations at half resolution, not 30 %)");
+  nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim][-coarse] (-dssim: 0.2 D-SSIM in the loss; -coarse: " +
+                      std::to_string(std::lround(100 * render::gs::kCoarseConfigShare)) + " % of the iterations at half resolution)");
   nvs->add_option("--holdout", na->holdout, "hold out frames with index % N == N/2");
   nvs->add_option("--max-width", na->max_width, "downscale wider images to this width");
   nvs->callback([na, &result] { result = run_nvs(*na); });
