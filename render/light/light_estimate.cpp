@@ -98,21 +98,21 @@ struct ShadowCue {
   int boxes = 0;
 };
 
-// The ground region a box's shadow covers for a sun direction, and the box itself, as convex
-// image polygons; false when the box is far from the camera or out of view.
+// The ground region a box's shadow covers for a sun direction (one convex image polygon per
+// solid casting it), and the box itself; false when the box is far from the camera or out of view.
 struct ShadowPolygons {
-  std::vector<cv::Point> shadow, body;
+  std::vector<std::vector<cv::Point>> shadow;
+  std::vector<cv::Point> body;
 };
+cv::Rect bounds(const std::vector<std::vector<cv::Point>>& polygons) {
+  cv::Rect r;
+  for (const auto& p : polygons) r = r.area() == 0 ? cv::boundingRect(p) : (r | cv::boundingRect(p));
+  return r;
+}
 bool shadow_region(const LightView& v, const GroundBox& b, const Eigen::Vector3d& sun, ShadowPolygons& out) {
   if ((b.center - v.camera_to_world.translation()).norm() > 30) return false;
   const double ground = b.center.z() - b.size_lwh.z() / 2;
   const auto corners = scene::box_corners(b.center, b.size_lwh, b.yaw);
-  std::vector<Eigen::Vector3d> on_ground, body(corners.begin(), corners.end());
-  for (const auto& c : corners) {
-    const Eigen::Vector3d tip = c - sun * ((c.z() - ground) / sun.z());
-    on_ground.emplace_back(tip.x(), tip.y(), ground);
-    on_ground.emplace_back(c.x(), c.y(), ground);
-  }
   // Clipped at the near plane: the nearest vehicles, reaching past the image, cast the largest
   // visible shadows.
   auto pixels = [&](const std::vector<Eigen::Vector3d>& world) {
@@ -122,16 +122,27 @@ bool shadow_region(const LightView& v, const GroundBox& b, const Eigen::Vector3d
     if (px.size() >= 3) cv::convexHull(px, hull);
     return hull;
   };
-  out.shadow = pixels(on_ground);
-  out.body = pixels(body);
-  if (out.shadow.size() < 3 || out.body.size() < 3) return false;
-  return (cv::boundingRect(out.shadow) & cv::Rect(0, 0, v.camera.width, v.camera.height)).area() >= 50;
+  out.shadow.clear();
+  for (const auto& solid : shadow_casters(b)) {
+    std::vector<Eigen::Vector3d> on_ground;
+    for (const auto& c : solid) {
+      const Eigen::Vector3d tip = c - sun * ((c.z() - ground) / sun.z());
+      on_ground.emplace_back(tip.x(), tip.y(), ground);
+      on_ground.emplace_back(c.x(), c.y(), ground);
+    }
+    auto hull = pixels(on_ground);
+    if (hull.size() >= 3) out.shadow.push_back(std::move(hull));
+  }
+  out.body = pixels(std::vector<Eigen::Vector3d>(corners.begin(), corners.end()));
+  if (out.shadow.empty() || out.body.size() < 3) return false;
+  return (bounds(out.shadow) & cv::Rect(0, 0, v.camera.width, v.camera.height)).area() >= 50;
 }
 
-// Rasterises polygons into a mask covering only `roi` of the image.
-cv::Mat roi_mask(const cv::Rect& roi, const std::vector<cv::Point>& polygon) {
+// Rasterises convex polygons (their union) into a mask covering only `roi` of the image.
+cv::Mat roi_mask(const cv::Rect& roi, const std::vector<std::vector<cv::Point>>& polygons) {
   cv::Mat m(roi.size(), CV_8U, cv::Scalar(0));
-  if (!polygon.empty()) cv::fillPoly(m, std::vector<std::vector<cv::Point>>{polygon}, 255, cv::LINE_8, 0, -roi.tl());
+  for (const auto& polygon : polygons)
+    if (!polygon.empty()) cv::fillPoly(m, std::vector<std::vector<cv::Point>>{polygon}, 255, cv::LINE_8, 0, -roi.tl());
   return m;
 }
 
@@ -185,12 +196,12 @@ ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::
       ShadowPolygons sp, mp;
       if (!shadow_region(views[vi], b, sun, sp)) continue;
       const bool mirrored = shadow_region(views[vi], b, mirror, mp);
-      cv::Rect box = cv::boundingRect(sp.shadow) | cv::boundingRect(sp.body);
-      if (mirrored) box |= cv::boundingRect(mp.shadow);
+      cv::Rect box = bounds(sp.shadow) | cv::boundingRect(sp.body);
+      if (mirrored) box |= bounds(mp.shadow);
       box.x -= kRing, box.y -= kRing, box.width += 2 * kRing, box.height += 2 * kRing;
       const cv::Rect roi = box & image;
       if (roi.area() == 0) continue;
-      cv::Mat shadow = roi_mask(roi, sp.shadow), blocked = roi_mask(roi, sp.body), lit, ring;
+      cv::Mat shadow = roi_mask(roi, sp.shadow), blocked = roi_mask(roi, {sp.body}), lit, ring;
       cv::dilate(blocked, blocked, cv::Mat(), cv::Point(-1, -1), 2);
       if (mirrored) {
         lit = roi_mask(roi, mp.shadow);
@@ -546,7 +557,7 @@ std::vector<GroundBox> scene_ground_boxes(const scene::Scene& s, int frame) {
   std::vector<GroundBox> out;
   for (const auto& o : s.objects)
     if (o.has_category_prefix("vehicle"))
-      if (const auto p = o.at(frame)) out.push_back({p->center, o.size_lwh, p->yaw, frame});
+      if (const auto p = o.at(frame)) out.push_back({p->center, o.size_lwh, p->yaw, frame, o.has_category_prefix("vehicle.car")});
   return out;
 }
 

@@ -17,6 +17,7 @@
 
 #include "common/scene/scene.hpp"
 #include "render/env_map.hpp"
+#include "render/light/shadow_casters.hpp"
 #include "render/sky.hpp"
 
 namespace chatsim::render::light {
@@ -27,13 +28,6 @@ struct LightView {
   cv::Mat rgb;                        // CV_8UC3, RGB
   double exposure = 1.0;              // seconds (1: unknown)
   int frame = -1;                     // which instant (boxes are matched to views of theirs); -1: any
-};
-
-struct GroundBox {                    // a labelled object standing on the ground (shadow cue)
-  Eigen::Vector3d center;
-  Eigen::Vector3d size_lwh;
-  double yaw = 0;
-  int frame = -1;                     // the instant it stands there; -1: in every view
 };
 
 struct LightEstimate {
@@ -59,8 +53,8 @@ std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);
 
 // Bumped when the estimator changes what it finds for the same scene: caches of estimates key
 // on it (1: the clip's frames, shadows scored by outline agreement; 2: a low sun's disc found
-// inside a glow that clips one channel).
-inline constexpr int kLightEstimatorVersion = 2;
+// inside a glow that clips one channel; 3: cars cast their shadows as cars, not as boxes).
+inline constexpr int kLightEstimatorVersion = 3;
 
 // A scene's light, from `frames` instants spread over its clip (the sun does not move in a
 // clip; every instant adds vehicles whose shadows are measurable).

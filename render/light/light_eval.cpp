@@ -217,8 +217,10 @@ nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::fu
         std::acos(std::clamp(double(est.sky.sun_direction.normalized().dot(sun)), -1.0, 1.0)) * 180 / M_PI;
     const double log_err = std::abs(std::log10(std::max(double(luminance(est.sun_radiance)), 1e-12) / std::max(sun_lum, 1e-12)));
     angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
+    const Eigen::Vector3f found = est.sky.sun_direction.normalized();
     frames.push_back({{"frame", f.index}, {"sky_type", est.sunny ? "sunny" : "overcast"}, {"sun_cue", est.sun_cue},
-                      {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err}, {"seconds", secs}});
+                      {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
+                      {"estimated_direction", {found.x(), found.y(), found.z()}}, {"seconds", secs}});
     if (progress) {
       char line[160];
       std::snprintf(line, sizeof line, "frame %d: sun %.1f deg off (%s), %.1f s", f.index, angle, est.sun_cue.c_str(), secs);
@@ -230,7 +232,8 @@ nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::fu
   const auto t0 = std::chrono::steady_clock::now();
   const LightEstimate clip = estimate_scene_light(s, clip_frames);
   const double clip_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const double clip_angle = std::acos(std::clamp(double(clip.sky.sun_direction.normalized().dot(sun)), -1.0, 1.0)) * 180 / M_PI;
+  const Eigen::Vector3f clip_found = clip.sky.sun_direction.normalized();
+  const double clip_angle = std::acos(std::clamp(double(clip_found.dot(sun)), -1.0, 1.0)) * 180 / M_PI;
   const double clip_log = std::abs(std::log10(std::max(double(luminance(clip.sun_radiance)), 1e-12) / std::max(sun_lum, 1e-12)));
   if (progress) {
     char line[200];
@@ -249,6 +252,7 @@ nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::fu
             {"sky_type", clip.sunny ? "sunny" : "overcast"},
             {"sun_cue", clip.sun_cue},
             {"peak_angular_error_deg", clip_angle},
+            {"estimated_direction", {clip_found.x(), clip_found.y(), clip_found.z()}},
             {"log10_intensity_error", clip_log},
             {"seconds", clip_secs}}}};
 }
