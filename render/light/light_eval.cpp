@@ -213,11 +213,10 @@ nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::fu
     const auto t0 = std::chrono::steady_clock::now();
     const LightEstimate est = estimate_light(views, scene_ground_boxes(s, f.index));
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double angle =
-        std::acos(std::clamp(double(est.sky.sun_direction.normalized().dot(sun)), -1.0, 1.0)) * 180 / M_PI;
+    const Eigen::Vector3f found = est.sky.sun_direction.normalized();
+    const double angle = std::acos(std::clamp(double(found.dot(sun)), -1.0, 1.0)) * 180 / M_PI;
     const double log_err = std::abs(std::log10(std::max(double(luminance(est.sun_radiance)), 1e-12) / std::max(sun_lum, 1e-12)));
     angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
-    const Eigen::Vector3f found = est.sky.sun_direction.normalized();
     frames.push_back({{"frame", f.index}, {"sky_type", est.sunny ? "sunny" : "overcast"}, {"sun_cue", est.sun_cue},
                       {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
                       {"estimated_direction", {found.x(), found.y(), found.z()}}, {"seconds", secs}});
