@@ -1,7 +1,7 @@
 #pragma once
 // Lighting estimation from a car's LDR camera images: an HDR sky dome with a sun, in the scene's
 // radiance units. Sky pixels (bright, smooth, above the horizon, reached from the top of the
-// image, clipped ones as lower bounds) are fitted by a Preetham clear sky or a CIE overcast
+// image and not going on below the horizon, clipped ones as lower bounds) are fitted by a Preetham clear sky or a CIE overcast
 // sky; the sun's direction is searched, scoring that fit together with the shadows labelled
 // boxes would cast on the ground (how much darker the predicted shadow is, and how well its
 // outline fits the dark ground; boxes matched to the views of their own instant, so several
@@ -53,8 +53,10 @@ std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);
 
 // Bumped when the estimator changes what it finds for the same scene: caches of estimates key
 // on it (1: the clip's frames, shadows scored by outline agreement; 2: a low sun's disc found
-// inside a glow that clips one channel; 3: cars cast their shadows as cars, not as boxes).
-inline constexpr int kLightEstimatorVersion = 3;
+// inside a glow that clips one channel; 3: cars cast their shadows as cars, not as boxes; 4: a
+// bright region going on below the horizon is not sky, and a mostly clipped sky beside
+// shadowless vehicles does not say sunny).
+inline constexpr int kLightEstimatorVersion = 4;
 
 // A scene's light, from `frames` instants spread over its clip (the sun does not move in a
 // clip; every instant adds vehicles whose shadows are measurable).

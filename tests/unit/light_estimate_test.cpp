@@ -1,7 +1,9 @@
-// Lighting estimation on analytic panoramas seen through the car's three front cameras: a clear
-// sky with the sun in view, the sun behind the car, an overcast sky, and a bright window that
-// must not be taken for the sun.
+// Lighting estimation on analytic panoramas seen through the car's three front cameras (a clear
+// sky with the sun in view, the sun behind the car, an overcast sky, a bright window that must
+// not be taken for the sun) and on painted streets (cars' shadows, shadowless cars, the sky mask).
 #include <cmath>
+#include <functional>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -105,65 +107,110 @@ TEST(LightEstimate, ABrightWindowInAFacadeIsNotTheSun) {
   EXPECT_NE(heading(r, 0)["sun_cue"], "visible");
 }
 
+// A 320x200 front camera at `ego` looking along +x (world z up), each pixel coloured by its ray.
+light::LightView front_view(const Eigen::Vector3d& ego, int frame, const std::function<cv::Vec3b(const Eigen::Vector3d&)>& colour) {
+  light::LightView v;
+  v.camera.name = "front";
+  v.camera.width = 320, v.camera.height = 200;
+  v.camera.fx = v.camera.fy = 200, v.camera.cx = 159.5, v.camera.cy = 99.5;
+  Eigen::Matrix3d cv_in_flu;
+  cv_in_flu << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  v.camera_to_world = Eigen::Isometry3d::Identity();
+  v.camera_to_world.linear() = cv_in_flu;
+  v.camera_to_world.translation() = ego;
+  v.frame = frame;
+  v.rgb = cv::Mat(200, 320, CV_8UC3);
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 320; ++x) v.rgb.at<cv::Vec3b>(y, x) = colour((cv_in_flu * Eigen::Vector3d((x - 159.5) / 200, (y - 99.5) / 200, 1)).normalized());
+  return v;
+}
+
+// Whether a ray meets an axis-aligned box (slab test).
+bool hits_box(const Eigen::Vector3d& o, const Eigen::Vector3d& d, const Eigen::Vector3d& c, const Eigen::Vector3d& size) {
+  double t0 = 0, t1 = 1e9;
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(d[k]) < 1e-12) {
+      if (std::abs(o[k] - c[k]) > size[k] / 2) return false;
+      continue;
+    }
+    double a = (c[k] - size[k] / 2 - o[k]) / d[k], b = (c[k] + size[k] / 2 - o[k]) / d[k];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a), t1 = std::min(t1, b);
+  }
+  return t0 <= t1;
+}
+
+const Eigen::Vector3d kCarSize(4.5, 1.8, 1.5);
+
+// Views of one car per instant on a grey road; the road darkened where the car's shadow falls
+// for `sun` (none: no shadow), the sky as `sky` colours it.
+struct Street {
+  std::vector<light::LightView> views;
+  std::vector<light::GroundBox> boxes;
+};
+Street street(const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& ego_and_car, const std::optional<Eigen::Vector3d>& sun,
+              const std::function<cv::Vec3b(const Eigen::Vector3d&)>& sky, const cv::Vec3b& road) {
+  Street out;
+  for (size_t i = 0; i < ego_and_car.size(); ++i) {
+    const auto& [ego, car] = ego_and_car[i];
+    out.views.push_back(front_view(ego, int(i), [&](const Eigen::Vector3d& d) {
+      if (hits_box(ego, d, car, kCarSize)) return cv::Vec3b(70, 70, 80);
+      if (d.z() >= 0) return sky(d);
+      const Eigen::Vector3d ground = ego + d * (-ego.z() / d.z());
+      return sun && hits_box(ground + Eigen::Vector3d(0, 0, 1e-3), *sun, car, kCarSize) ? cv::Vec3b(45, 45, 48) : road;
+    }));
+    out.boxes.push_back({car, kCarSize, 0.0, int(i)});
+  }
+  return out;
+}
+
 // A grey road under a featureless sky, one car at each of two instants, and the shadow each
 // casts for a known sun painted where it falls: the sun comes from the shadows alone (the sky
 // says nothing), each car measured in the views of its own instant.
 TEST(LightEstimate, ShadowsOfCarsAtTwoInstantsGiveTheSun) {
   const Eigen::Vector3d sun = dir_deg(100, 40).cast<double>();
-  const Eigen::Vector3d size(4.5, 1.8, 1.5);
-  struct Instant {
-    Eigen::Vector3d ego, car;
-  };
-  const std::vector<Instant> instants{{{0, 0, 1.6}, {9, 3.5, 0.75}}, {{4, 0, 1.6}, {14, -3.5, 0.75}}};
-  // Where a ray meets the axis-aligned box (slab test).
-  auto hits = [&](const Eigen::Vector3d& o, const Eigen::Vector3d& d, const Eigen::Vector3d& c) {
-    double t0 = 0, t1 = 1e9;
-    for (int k = 0; k < 3; ++k) {
-      if (std::abs(d[k]) < 1e-12) {
-        if (std::abs(o[k] - c[k]) > size[k] / 2) return false;
-        continue;
-      }
-      double a = (c[k] - size[k] / 2 - o[k]) / d[k], b = (c[k] + size[k] / 2 - o[k]) / d[k];
-      if (a > b) std::swap(a, b);
-      t0 = std::max(t0, a), t1 = std::min(t1, b);
-    }
-    return t0 <= t1;
-  };
-  std::vector<light::LightView> views;
-  std::vector<light::GroundBox> boxes;
-  for (size_t i = 0; i < instants.size(); ++i) {
-    const auto& in = instants[i];
-    light::LightView v;
-    v.camera.name = "front";
-    v.camera.width = 320, v.camera.height = 200;
-    v.camera.fx = v.camera.fy = 200, v.camera.cx = 159.5, v.camera.cy = 99.5;
-    Eigen::Matrix3d cv_in_flu;
-    cv_in_flu << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-    v.camera_to_world = Eigen::Isometry3d::Identity();
-    v.camera_to_world.linear() = cv_in_flu;
-    v.camera_to_world.translation() = in.ego;
-    v.frame = int(i);
-    v.rgb = cv::Mat(200, 320, CV_8UC3);
-    for (int y = 0; y < 200; ++y)
-      for (int x = 0; x < 320; ++x) {
-        const Eigen::Vector3d d = cv_in_flu * Eigen::Vector3d((x - 159.5) / 200, (y - 99.5) / 200, 1);
-        cv::Vec3b c(150, 180, 230);  // sky
-        if (hits(in.ego, d.normalized(), in.car)) {
-          c = cv::Vec3b(70, 70, 80);  // the car
-        } else if (d.z() < 0) {
-          const Eigen::Vector3d ground = in.ego + d * (-in.ego.z() / d.z());
-          c = hits(ground + Eigen::Vector3d(0, 0, 1e-3), sun, in.car) ? cv::Vec3b(45, 45, 48) : cv::Vec3b(130, 130, 128);
-        }
-        v.rgb.at<cv::Vec3b>(y, x) = c;
-      }
-    views.push_back(v);
-    boxes.push_back({in.car, size, 0.0, int(i)});
-  }
-  const auto est = light::estimate_light(views, boxes);
+  const auto s = street({{{0, 0, 1.6}, {9, 3.5, 0.75}}, {{4, 0, 1.6}, {14, -3.5, 0.75}}}, sun,
+                        [](const Eigen::Vector3d&) { return cv::Vec3b(150, 180, 230); }, cv::Vec3b(130, 130, 128));
+  const auto est = light::estimate_light(s.views, s.boxes);
   EXPECT_TRUE(est.sunny);
   EXPECT_EQ(est.sun_cue, "shadows");
   const double err = std::acos(std::clamp(est.sky.sun_direction.normalized().cast<double>().dot(sun), -1.0, 1.0)) * 180 / M_PI;
   EXPECT_LT(err, 10.0) << "estimated " << est.sky.sun_direction.transpose();
+}
+
+// Overcast, as on the demo street: a sky clipped white but for a pale band above the roofs
+// (its only measured pixels, which a clear sky model fits as well as an overcast one) and cars
+// at three instants that cast no shadow. Before version 4 this was called sunny from the band.
+TEST(LightEstimate, ShadowlessCarsUnderAClippedSkyAreOvercast) {
+  const auto s = street({{{0, 0, 1.6}, {9, 3.5, 0.75}}, {{4, 0, 1.6}, {14, -3.5, 0.75}}, {{8, 0, 1.6}, {16, 3.0, 0.75}}}, std::nullopt,
+                        [](const Eigen::Vector3d& d) {
+                          // White from 11.5 deg up; below, a band brighter to the left.
+                          const double t = std::clamp((d.z() - 0.02) / 0.18, 0.0, 1.0), left = std::clamp(d.y() + 0.5, 0.0, 1.0);
+                          const double r = 120 + 80 * left, g = 150 + 60 * left, b = 215 + 30 * left;
+                          return cv::Vec3b(uchar(r + (255 - r) * t), uchar(g + (255 - g) * t), uchar(b + (255 - b) * t));
+                        },
+                        cv::Vec3b(100, 100, 100));
+  const auto est = light::estimate_light(s.views, s.boxes);
+  EXPECT_FALSE(est.sunny) << est.to_json("").dump();
+}
+
+// A smooth pale wall reaching from the top of the image to below the horizon is not sky (it
+// goes on below it); the sky beside it, above dark roofs, is; a sunlit treetop in it is not.
+TEST(SkyMask, APaleWallGoingOnBelowTheHorizonIsNotSky) {
+  const auto v = front_view({0, 0, 1.6}, 0, [](const Eigen::Vector3d& d) {
+    if (d.y() < -0.1) return cv::Vec3b(200, 200, 205);                                        // the wall, on the right
+    if (d.z() > 0.35 && std::abs(d.y() - 0.15) < 0.06) return cv::Vec3b(120, 220, 110);      // a treetop
+    if (d.z() > 0.15) return cv::Vec3b(150, 180, 230);                                         // sky
+    return d.z() > 0 ? cv::Vec3b(60, 60, 60) : cv::Vec3b(110, 110, 110);                      // roofs, road
+  });
+  const cv::Mat mask = light::sky_mask(v);
+  auto at = [&](const Eigen::Vector3d& world) {
+    const Eigen::Vector3d c = v.camera_to_world.linear().transpose() * world;
+    return mask.at<uchar>(int(std::lround(c.y() / c.z() * 200 + 99.5)), int(std::lround(c.x() / c.z() * 200 + 159.5)));
+  };
+  EXPECT_EQ(at({1, 0.3, 0.4}), 255) << "the sky";
+  EXPECT_EQ(at({1, -0.3, 0.4}), 0) << "the wall";
+  EXPECT_EQ(at({1, 0.15, 0.45}), 0) << "the treetop";
 }
 
 // The clip's estimate takes the middle frame of equal parts of the clip, and no more frames
