@@ -1,8 +1,8 @@
 #pragma once
 // Lighting estimation from a car's LDR camera images: an HDR sky dome with a sun, in the scene's
 // radiance units. Sky pixels (bright, smooth, above the horizon, reached from the top of the
-// image and not going on below the horizon, clipped ones as lower bounds) are fitted by a Preetham clear sky or a CIE overcast
-// sky; the sun's direction is searched, scoring that fit together with the shadows labelled
+// image and not going on below the horizon, clipped ones as lower bounds) are fitted by a
+// Preetham clear sky or a CIE overcast sky; the sun's direction is searched, scoring that fit together with the shadows labelled
 // boxes would cast on the ground (how much darker the predicted shadow is, and how well its
 // outline fits the dark ground; boxes matched to the views of their own instant, so several
 // instants of a clip add up), and a visible sun blob is taken where the fit agrees with it;

@@ -179,8 +179,9 @@ TEST(LightEstimate, ShadowsOfCarsAtTwoInstantsGiveTheSun) {
 }
 
 // Overcast, as on the demo street: a sky clipped white but for a pale band above the roofs
-// (its only measured pixels, which a clear sky model fits as well as an overcast one) and cars
-// at three instants that cast no shadow. Before version 4 this was called sunny from the band.
+// (its only measured pixels, brighter to one side, which a clear sky with its sun there fits
+// better than an overcast one) and cars at three instants that cast no shadow. Before version
+// 4 this was called sunny from the band.
 TEST(LightEstimate, ShadowlessCarsUnderAClippedSkyAreOvercast) {
   const auto s = street({{{0, 0, 1.6}, {9, 3.5, 0.75}}, {{4, 0, 1.6}, {14, -3.5, 0.75}}, {{8, 0, 1.6}, {16, 3.0, 0.75}}}, std::nullopt,
                         [](const Eigen::Vector3d& d) {
@@ -198,10 +199,10 @@ TEST(LightEstimate, ShadowlessCarsUnderAClippedSkyAreOvercast) {
 // goes on below it); the sky beside it, above dark roofs, is; a sunlit treetop in it is not.
 TEST(SkyMask, APaleWallGoingOnBelowTheHorizonIsNotSky) {
   const auto v = front_view({0, 0, 1.6}, 0, [](const Eigen::Vector3d& d) {
-    if (d.y() < -0.1) return cv::Vec3b(200, 200, 205);                                        // the wall, on the right
-    if (d.z() > 0.35 && std::abs(d.y() - 0.15) < 0.06) return cv::Vec3b(120, 220, 110);      // a treetop
-    if (d.z() > 0.15) return cv::Vec3b(150, 180, 230);                                         // sky
-    return d.z() > 0 ? cv::Vec3b(60, 60, 60) : cv::Vec3b(110, 110, 110);                      // roofs, road
+    if (d.y() < -0.1) return cv::Vec3b(200, 200, 205);                                    // the wall, on the right
+    if (d.z() > 0.35 && std::abs(d.y() - 0.15) < 0.06) return cv::Vec3b(120, 220, 110);  // a treetop
+    if (d.z() > 0.15) return cv::Vec3b(150, 180, 230);                                     // sky
+    return d.z() > 0 ? cv::Vec3b(60, 60, 60) : cv::Vec3b(110, 110, 110);                  // roofs, road
   });
   const cv::Mat mask = light::sky_mask(v);
   auto at = [&](const Eigen::Vector3d& world) {
