@@ -530,9 +530,10 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
   // Sunny or overcast: a blue sky, a visible sun or real shadows say sunny.
   // A clear sky model that explains the sky clearly better than an overcast one says sunny too
   // (tinted or hazy skies are not blue, but keep the gradient around the sun).
-  // A sky mostly clipped white says little: its few measured pixels are its edges against
-  // roofs, which a Preetham sky (more free parameters) fits better than an overcast one. With
-  // vehicles measured whose shadows are missing, that sky's word is not taken. On the demo
+  // A sky mostly clipped (a channel at the top of its range; white in practice) says little: its
+  // few measured pixels are its edges against roofs, which a Preetham sky (more free
+  // parameters) fits better than an overcast one. With vehicles measured whose shadows are
+  // missing, that sky's word is not taken. On the demo
   // street (seeds 1-5 sunny, 1 and 5 overcast) the clipped share of the sky was 0.10-0.49 on
   // sunny frames and 0.55-0.91 on overcast ones; the margin is narrow, so boxes decide with it.
   const double clipped_share = double(sky_clipped_px) / std::max(1, est.sky_pixels);

@@ -22,6 +22,11 @@ namespace {
 
 constexpr double kCapDeg = 5, kRingDeg = 10;
 
+// The angle between two unit directions, in degrees.
+double angle_deg(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+  return std::acos(std::clamp(double(a.dot(b)), -1.0, 1.0)) * 180 / M_PI;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return std::numeric_limits<double>::quiet_NaN();  // null in the JSON: nothing measured
   std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
@@ -137,7 +142,7 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
       dir = panorama_peak(dome).direction;
       intensity = panorama_peak(dome).irradiance;
     }
-    const double angle = std::acos(std::clamp(double(dir.dot(truth.direction)), -1.0, 1.0)) * 180 / M_PI;
+    const double angle = angle_deg(dir, truth.direction);
     const double log_ratio = std::log10(std::max(intensity, 1e-12) / std::max(truth.irradiance, 1e-12)), log_err = std::abs(log_ratio);
     angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
     sunny += est.sunny ? 1 : 0;
@@ -171,7 +176,7 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
       logs.push_back(h["log10_intensity_error"]);
       const double heading = h["heading_deg"].get<double>() * M_PI / 180;
       const Eigen::Vector3f guess(float(std::cos(heading) * 0.707), float(std::sin(heading) * 0.707), 0.707f);
-      baseline.push_back(std::acos(std::clamp(double(guess.dot(peak)), -1.0, 1.0)) * 180 / M_PI);
+      baseline.push_back(angle_deg(guess, peak));
     }
     if (progress) {
       char line[256];
@@ -214,7 +219,7 @@ nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::fu
     const LightEstimate est = estimate_light(views, scene_ground_boxes(s, f.index));
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const Eigen::Vector3f found = est.sky.sun_direction.normalized();
-    const double angle = std::acos(std::clamp(double(found.dot(sun)), -1.0, 1.0)) * 180 / M_PI;
+    const double angle = angle_deg(found, sun);
     const double log_err = std::abs(std::log10(std::max(double(luminance(est.sun_radiance)), 1e-12) / std::max(sun_lum, 1e-12)));
     angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
     frames.push_back({{"frame", f.index}, {"sky_type", est.sunny ? "sunny" : "overcast"}, {"sun_cue", est.sun_cue},
@@ -232,7 +237,7 @@ nlohmann::json evaluate_on_scene(const scene::Scene& s, int every, const std::fu
   const LightEstimate clip = estimate_scene_light(s, clip_frames);
   const double clip_secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Eigen::Vector3f clip_found = clip.sky.sun_direction.normalized();
-  const double clip_angle = std::acos(std::clamp(double(clip_found.dot(sun)), -1.0, 1.0)) * 180 / M_PI;
+  const double clip_angle = angle_deg(clip_found, sun);
   const double clip_log = std::abs(std::log10(std::max(double(luminance(clip.sun_radiance)), 1e-12) / std::max(sun_lum, 1e-12)));
   if (progress) {
     char line[200];
