@@ -73,8 +73,36 @@ PanoramaPeak panorama_peak(const EnvMap& pano) {
   return p;
 }
 
+double overbright_ground_share(const EnvMap& pano) {
+  // Row y's pixels span the same solid angle; row 0 is at the zenith.
+  const auto row_sr = [](int y, int w, int h) { return std::sin((y + 0.5) * M_PI / h) * (M_PI / h) * (2 * M_PI / w); };
+  // The most any plane receives, max over n of the integral of L (n . d)+: over a coarse copy of
+  // the map that keeps each block's power, with the coarse directions as the normals.
+  const int cw = 64, ch = 32;
+  std::vector<double> power(size_t(cw * ch), 0.0);
+  for (int y = 0; y < pano.height(); ++y)
+    for (int x = 0; x < pano.width(); ++x)
+      power[size_t((y * ch / pano.height()) * cw + x * cw / pano.width())] += luminance(pano.at(x, y)) * row_sr(y, pano.width(), pano.height());
+  std::vector<Eigen::Vector3f> dirs;
+  for (int y = 0; y < ch; ++y)
+    for (int x = 0; x < cw; ++x) dirs.push_back(equirect_dir((x + 0.5f) / cw, (y + 0.5f) / ch));
+  double max_irradiance = 0;
+  for (const auto& n : dirs) {
+    double e = 0;
+    for (size_t k = 0; k < dirs.size(); ++k) e += power[k] * std::max(0.0f, n.dot(dirs[k]));
+    max_irradiance = std::max(max_irradiance, e);
+  }
+  const double bound = max_irradiance / M_PI;  // a white diffuse surface facing the brightest way
+  double over = 0;
+  for (int y = pano.height() / 2; y < pano.height(); ++y)
+    for (int x = 0; x < pano.width(); ++x)
+      if (luminance(pano.at(x, y)) > bound) over += row_sr(y, pano.width(), pano.height());
+  return over / (4 * M_PI);
+}
+
 nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name, int headings, int width, const std::string& save_dir) {
   const PanoramaPeak truth = panorama_peak(pano);
+  const double overbright = overbright_ground_share(pano);
   nlohmann::json results = nlohmann::json::array();
   std::vector<double> angles, logs, seconds;
   int sunny = 0;
@@ -156,6 +184,9 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
           {"peak_direction", {truth.direction.x(), truth.direction.y(), truth.direction.z()}},
           {"peak_elevation_deg", std::asin(std::clamp(double(truth.direction.z()), -1.0, 1.0)) * 180 / M_PI},
           {"peak_irradiance", truth.irradiance},
+          // A clipped sun's irradiance is a lower bound: its intensity errors say little.
+          {"peak_clipped", overbright > kClippedSunGroundShare},
+          {"overbright_ground_share", overbright},
           {"median_angular_error_deg", median(angles)},
           {"median_log10_intensity_error", median(logs)},
           {"median_seconds", median(seconds)},
@@ -166,29 +197,35 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
 nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int headings, int width, const std::string& save_dir,
                                   const std::function<void(const std::string&)>& progress) {
   nlohmann::json all = nlohmann::json::array();
-  std::vector<double> angles, logs, baseline;
+  std::vector<double> angles, logs, logs_with_clipped, baseline;
+  std::vector<std::string> clipped;
   for (const auto& file : files) {
     const auto pano = EnvMap::read(file);
     const nlohmann::json r = evaluate_on_panorama(pano, std::filesystem::path(file).filename().string(), headings, width, save_dir);
     const Eigen::Vector3f peak(r["peak_direction"][0].get<float>(), r["peak_direction"][1].get<float>(), r["peak_direction"][2].get<float>());
     for (const auto& h : r["headings"]) {
       angles.push_back(h["peak_angular_error_deg"]);
-      logs.push_back(h["log10_intensity_error"]);
+      logs_with_clipped.push_back(h["log10_intensity_error"]);
+      if (!r["peak_clipped"].get<bool>()) logs.push_back(h["log10_intensity_error"]);
       const double heading = h["heading_deg"].get<double>() * M_PI / 180;
       const Eigen::Vector3f guess(float(std::cos(heading) * 0.707), float(std::sin(heading) * 0.707), 0.707f);
       baseline.push_back(angle_deg(guess, peak));
     }
     if (progress) {
-      char line[256];
-      std::snprintf(line, sizeof line, "%s: median peak error %.1f deg, median log10 intensity error %.2f", r["panorama"].get<std::string>().c_str(),
-                    r["median_angular_error_deg"].get<double>(), r["median_log10_intensity_error"].get<double>());
+      char line[320];
+      std::snprintf(line, sizeof line, "%s: median peak error %.1f deg, median log10 intensity error %.2f%s", r["panorama"].get<std::string>().c_str(),
+                    r["median_angular_error_deg"].get<double>(), r["median_log10_intensity_error"].get<double>(),
+                    r["peak_clipped"].get<bool>() ? " (its sun is clipped: intensity not counted in the median)" : "");
       progress(line);
     }
+    if (r["peak_clipped"].get<bool>()) clipped.push_back(r["panorama"]);
     all.push_back(r);
   }
   return {{"panoramas", all},
           {"median_angular_error_deg", median(angles)},
           {"median_log10_intensity_error", median(logs)},
+          {"median_log10_intensity_error_with_clipped", median(logs_with_clipped)},
+          {"clipped_sun_panoramas", clipped},
           {"baseline_fixed_guess_median_angular_error_deg", median(baseline)},
           {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
 }

@@ -106,6 +106,29 @@ TEST(LightEstimate, ABrightWindowInAFacadeIsNotTheSun) {
   const auto r = light::evaluate_on_panorama(env, "window", 1, 240);
   EXPECT_NE(heading(r, 0)["sun_cue"], "visible");
 }
+// A pale wall facing the sun, lit by the whole panorama (sun included), below the horizon
+// behind the car; then the same panorama with its sun clipped to the sky around it, as an HDRI
+// merged from too few exposures keeps it. Only the clipped one is flagged.
+TEST(LightEval, APanoramaWhoseSunIsClippedIsFlaggedByItsOverbrightWall) {
+  SkyParams p;
+  p.sun_direction = dir_deg(180, 20);
+  EnvMap env = panorama(p);
+  const float wall = 0.8f / float(M_PI) * luminance(env.irradiance(dir_deg(180, 0)));
+  for (int y = 0; y < env.height(); ++y)
+    for (int x = 0; x < env.width(); ++x) {
+      const Eigen::Vector3f d = equirect_dir((x + 0.5f) / float(env.width()), (y + 0.5f) / float(env.height()));
+      const double az = std::atan2(d.y(), d.x()) * 180 / M_PI, el = std::asin(d.z()) * 180 / M_PI;
+      if (std::abs(az) > 150 && el > -20 && el < -2) env.at(x, y) = Rgb(1, 1, 1) * wall;
+    }
+  EXPECT_LT(light::overbright_ground_share(env), light::kClippedSunGroundShare);
+  const Eigen::Vector2f uv = equirect_uv(p.sun_direction.normalized());
+  const int sx = int(uv.x() * float(env.width())), sy = int(uv.y() * float(env.height()));
+  env.at(sx, sy) = env.at(sx + 2, sy);
+  EXPECT_GT(light::overbright_ground_share(env), light::kClippedSunGroundShare);
+  const auto r = light::evaluate_on_panorama(env, "clipped", 1, 240);
+  EXPECT_TRUE(r["peak_clipped"].get<bool>()) << r.dump();
+}
+
 
 // A 320x200 front camera at `ego` looking along +x (world z up), each pixel coloured by its ray.
 light::LightView front_view(const Eigen::Vector3d& ego, int frame, const std::function<cv::Vec3b(const Eigen::Vector3d&)>& colour) {
