@@ -55,8 +55,9 @@ std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);
 // on it (1: the clip's frames, shadows scored by outline agreement; 2: a low sun's disc found
 // inside a glow that clips one channel; 3: cars cast their shadows as cars, not as boxes; 4: a
 // bright region going on below the horizon is not sky, and a mostly clipped sky beside
-// shadowless vehicles does not say sunny).
-inline constexpr int kLightEstimatorVersion = 4;
+// shadowless vehicles does not say sunny; 5: where the shadows decide the sun, the sky's scale
+// is fitted to the samples within a factor 1.5 of the model).
+inline constexpr int kLightEstimatorVersion = 5;
 
 // A scene's light, from `frames` instants spread over its clip (the sun does not move in a
 // clip; every instant adds vehicles whose shadows are measurable).

@@ -201,6 +201,32 @@ TEST(LightEstimate, ShadowsOfCarsAtTwoInstantsGiveTheSun) {
   EXPECT_LT(err, 10.0) << "estimated " << est.sky.sun_direction.transpose();
 }
 
+// The same street, and a pale facade strip, smooth and ending above the roofs, taken into the
+// sky mask with the sky (as parts of facades cut off by windows are on the demo street): the
+// shadows decide the sun, and the sky's level comes from the sky, not pulled up by the strip
+// (three times brighter, a third of the mask: a least-squares scale was 1.4 times too bright).
+TEST(LightEstimate, APaleStripInTheSkyMaskDoesNotRaiseTheSkyTheShadowsScale) {
+  const Eigen::Vector3d sun = dir_deg(100, 40).cast<double>();
+  const cv::Vec3b blue(100, 125, 170);
+  const auto s = street({{{0, 0, 1.6}, {9, 3.5, 0.75}}, {{4, 0, 1.6}, {14, -3.5, 0.75}}}, sun,
+                        [&](const Eigen::Vector3d& d) {
+                          const double left = d.y() / d.x();
+                          if (d.z() < 0.05) return cv::Vec3b(60, 60, 60);  // roofs
+                          return left > 0.1 && left < 0.7 && d.z() > 0.09 ? cv::Vec3b(205, 205, 210) : blue;
+                        },
+                        cv::Vec3b(130, 130, 128));
+  const auto est = light::estimate_light(s.views, s.boxes);
+  ASSERT_EQ(est.sun_cue, "shadows");
+  const EnvMap dome = est.dome(256, 128);
+  const auto& lin = srgb_to_linear_table();
+  const float blue_lum = luminance(Rgb(lin[blue[0]], lin[blue[1]], lin[blue[2]]));
+  std::vector<double> ratios;  // the dome against the blue sky, where it is in view
+  for (double az = -30; az <= 0; az += 3)
+    for (double el = 5; el <= 20; el += 3) ratios.push_back(std::log10(luminance(dome.radiance(dir_deg(az, el))) / blue_lum));
+  std::nth_element(ratios.begin(), ratios.begin() + long(ratios.size() / 2), ratios.end());
+  EXPECT_LT(std::abs(ratios[ratios.size() / 2]), 0.06) << ratios[ratios.size() / 2] << " " << est.to_json("").dump();
+}
+
 // Overcast, as on the demo street: a sky clipped white but for a pale band above the roofs
 // (its only measured pixels, brighter to one side, which a clear sky with its sun there fits
 // better than an overcast one) and cars at three instants that cast no shadow. Before version
