@@ -54,10 +54,14 @@ Eigen::Vector3f from_angles(double az, double el) {
 // only says the sky is at least that bright there (censored): it costs only where the model
 // falls below it. Without that, an overexposed sky keeps just its darkest pixels, those far from
 // the sun, and the fit turns the sun away.
+// Robust: the scale from the samples within a factor kTrimFactor of the model, and each
+// sample's cost capped there, so that specks of a pale roof or facade left in the sky mask
+// neither pull the scale (and with it the sun's intensity the shadows give) nor the direction.
 struct Fit {
   double error = 1e30, log_scale = 0;
 };
-Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(const Eigen::Vector3f&)>& model) {
+constexpr double kTrimFactor = 1.5;
+Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(const Eigen::Vector3f&)>& model, bool robust) {
   std::vector<double> exact, at_least;
   exact.reserve(samples.size());
   for (const auto& s : samples) {
@@ -81,37 +85,28 @@ Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(c
     if (std::abs(next - b) < 1e-6) break;
     b = next;
   }
+  const double band = std::log(kTrimFactor);
+  if (robust)
+    for (int it = 0; it < 30; ++it) {
+      double sum = 0;
+      size_t n = 0;
+      for (double r : exact)
+        if (std::abs(r - b) < band) sum += r, ++n;
+      for (double r : at_least)
+        if (r > b && r - b < band) sum += r, ++n;
+      if (n == 0) break;
+      const double next = sum / double(n);
+      if (std::abs(next - b) < 1e-6) break;
+      b = next;
+    }
   f.log_scale = b;
+  const auto cost = [&](double d) { return robust ? std::min(d * d, band * band) : d * d; };
   double e = 0;
-  for (double r : exact) e += (r - b) * (r - b);
+  for (double r : exact) e += cost(r - b);
   for (double r : at_least)
-    if (r > b) e += (r - b) * (r - b);
+    if (r > b) e += cost(r - b);
   f.error = e / double(exact.size() + at_least.size());
   return f;
-}
-
-// The model's scale from the samples within a factor kTrimFactor of it (iterated from `start`):
-// a sky mask that took in specks of a pale roof or facade pulls a least-squares scale, and
-// through the sky's irradiance the sun's intensity the shadows give. Clipped samples count,
-// as in fit_model, only where the model falls short of them.
-constexpr double kTrimFactor = 1.5;
-double trimmed_log_scale(const std::vector<SkySample>& samples, const std::function<float(const Eigen::Vector3f&)>& model, double start) {
-  std::vector<std::pair<double, bool>> residuals;
-  for (const auto& s : samples)
-    residuals.emplace_back(std::log(std::max(luminance(s.radiance), 1e-9f)) - std::log(std::max(model(s.dir), 1e-9f)), s.clipped);
-  const double band = std::log(kTrimFactor);
-  double b = start;
-  for (int it = 0; it < 30; ++it) {
-    double sum = 0;
-    size_t n = 0;
-    for (const auto& [r, clipped] : residuals)
-      if (std::abs(r - b) < band && (!clipped || r > b)) sum += r, ++n;
-    if (n == 0) break;
-    const double next = sum / double(n);
-    if (std::abs(next - b) < 1e-6) break;
-    b = next;
-  }
-  return b;
 }
 
 // How much darker the ground is where boxes would cast their shadows for a sun direction.
@@ -493,7 +488,11 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
   }
   const double blue_ratio = blue_n > 0 ? blue / blue_n : 1.0;
   // Overcast: CIE, one parameter.
-  const Fit overcast = fit_model(samples, [](const Eigen::Vector3f& d) { return (1 + 2 * std::max(d.z(), 0.0f)) / 3; });
+  // Robust fits where vehicles are measured: on the demo street the sky mask keeps specks of
+  // truck roofs and facades. Without vehicles (blender-data's panoramas) the robust fit was
+  // worse: the blob slack and the sunny thresholds below were set on squared errors.
+  const bool robust = !boxes.empty();
+  const Fit overcast = fit_model(samples, [](const Eigen::Vector3f& d) { return (1 + 2 * std::max(d.z(), 0.0f)) / 3; }, robust);
   // Clear: Preetham over sun directions and turbidities, with the shadow cue where boxes are.
   struct Candidate {
     double az = 0, el = 0, turbidity = 3, cost = 1e30;
@@ -513,7 +512,7 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
       p.turbidity = float(T);
       p.compute_ground = false;
       const Sky sky(p);
-      Candidate c{az, el, T, 0, fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }), cue};
+      Candidate c{az, el, T, 0, fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }, robust), cue};
       c.cost = (samples.empty() ? 0.0 : c.fit.error) - kShadowWeight * cue.evidence;
       if (c.cost < best_t.cost) best_t = c;
     }
@@ -574,18 +573,9 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
     est.sun_cue = "none";
     return est;
   }
+  est.scale = float(std::exp(best.fit.log_scale));
   est.fit_error = best.fit.error;
   SkyParams p = est.sky;
-  est.scale = float(std::exp(best.fit.log_scale));
-  if (est.sun_cue == "shadows" && !samples.empty()) {
-    // The shadows fixed the sun; the sky gives only the scale, robustly. Where the sky decides
-    // the sun (no vehicles: the panoramas), the trimmed scale was worse (blender-data, log10
-    // 0.69 -> 0.76) and is not used.
-    p.compute_ground = false;
-    const Sky fitted(p);
-    est.scale = float(std::exp(trimmed_log_scale(samples, [&](const Eigen::Vector3f& d) { return luminance(fitted.radiance(d)); }, best.fit.log_scale)));
-    p.compute_ground = est.sky.compute_ground;
-  }
   const Sky model(p);
   const Rgb model_sun = model.sun_radiance() * est.scale;
   // Lit / shadow = (E_sun + E_sky) / (v E_sky): the sun's irradiance from the sky's, where v is

@@ -36,7 +36,7 @@ struct LightEstimate {
   float scale = 1;                    // the model's radiance multiplier that fits the images
   Rgb sun_radiance = Rgb::Zero();
   std::string sun_cue;                // "visible", "shadows", "sky_gradient", "none"
-  double fit_error = 0;               // RMS log error on sky pixels
+  double fit_error = 0;               // RMS log error on sky pixels (each capped at log 1.5 where vehicles were measured)
   int sky_pixels = 0;
 
   // The dome without the sun disc (below the horizon: a diffuse ground lit by it).
@@ -55,8 +55,8 @@ std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);
 // on it (1: the clip's frames, shadows scored by outline agreement; 2: a low sun's disc found
 // inside a glow that clips one channel; 3: cars cast their shadows as cars, not as boxes; 4: a
 // bright region going on below the horizon is not sky, and a mostly clipped sky beside
-// shadowless vehicles does not say sunny; 5: where the shadows decide the sun, the sky's scale
-// is fitted to the samples within a factor 1.5 of the model).
+// shadowless vehicles does not say sunny; 5: with vehicles measured, the sky fits are robust:
+// scale and cost from the samples within a factor 1.5 of the model).
 inline constexpr int kLightEstimatorVersion = 5;
 
 // A scene's light, from `frames` instants spread over its clip (the sun does not move in a
