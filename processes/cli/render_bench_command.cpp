@@ -92,10 +92,15 @@ int run_light(const LightArgs& a) {
   bench::write_scatter_png(png, {"Lighting estimation: median sun direction error per panorama (and demo scene: per frame, and the clip's as the agents)", "seconds per estimate",
                                  "median peak error [deg] (lower is better)", true},
                            pts);
-  if (!a.hdri.empty())
+  if (!a.hdri.empty()) {
+    // null where nothing was measured (e.g. every panorama's sun clipped): printed as nan.
+    const auto num = [](const json& j) { return j.is_number() ? j.get<double>() : NAN; };
     std::printf("all: median peak error %.1f deg (fixed-guess baseline %.1f deg), median log10 intensity error %.2f (%.2f with the clipped suns)\n",
-                report["median_angular_error_deg"].get<double>(), report["baseline_fixed_guess_median_angular_error_deg"].get<double>(),
-                report["median_log10_intensity_error"].get<double>(), report["median_log10_intensity_error_with_clipped"].get<double>());
+                num(report["median_angular_error_deg"]), num(report["baseline_fixed_guess_median_angular_error_deg"]),
+                num(report["median_log10_intensity_error"]), num(report["median_log10_intensity_error_with_clipped"]));
+    for (const char* key : {"sun_in_view", "sun_out_of_view"})
+      std::printf("%s: %d headings, median peak error %.1f deg\n", key, report[key]["headings"].get<int>(), num(report[key]["median_angular_error_deg"]));
+  }
   return exit_code::kOk;
 }
 

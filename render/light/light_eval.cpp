@@ -157,6 +157,15 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
       std::snprintf(file, sizeof file, "-%03d.png", int(std::lround(heading * 180 / M_PI)));
       write_rgb8(std::filesystem::path(save_dir) / (std::filesystem::path(name).stem().string() + file), strip);
     }
+    // Whether the panorama's sun lies inside one of the crops: out of them, only the sky's
+    // gradient and the scene's shading can tell where it is.
+    bool in_view = false;
+    for (const auto& v : views) {
+      const Eigen::Vector3d c = v.camera_to_world.linear().transpose() * truth.direction.cast<double>();
+      if (c.z() <= 0) continue;
+      const double u = v.camera.fx * c.x() / c.z() + v.camera.cx, w = v.camera.fy * c.y() / c.z() + v.camera.cy;
+      in_view |= u >= 0 && u < v.camera.width && w >= 0 && w < v.camera.height;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     const LightEstimate est = estimate_light(views);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -174,7 +183,7 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
     const double log_ratio = std::log10(std::max(intensity, 1e-12) / std::max(truth.irradiance, 1e-12)), log_err = std::abs(log_ratio);
     angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
     sunny += est.sunny ? 1 : 0;
-    results.push_back({{"heading_deg", heading * 180 / M_PI}, {"sky_type", est.sunny ? "sunny" : "overcast"},
+    results.push_back({{"heading_deg", heading * 180 / M_PI}, {"sun_in_view", in_view}, {"sky_type", est.sunny ? "sunny" : "overcast"},
                        {"sun_cue", est.sun_cue}, {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
                        {"log10_intensity_ratio", log_ratio},  // signed: above 0, the estimate is too bright
                        {"estimated_direction", {dir.x(), dir.y(), dir.z()}},
@@ -197,7 +206,7 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
 nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int headings, int width, const std::string& save_dir,
                                   const std::function<void(const std::string&)>& progress) {
   nlohmann::json all = nlohmann::json::array();
-  std::vector<double> angles, logs, logs_with_clipped, baseline;
+  std::vector<double> angles, logs, logs_with_clipped, baseline, angles_in_view, angles_out_of_view;
   std::vector<std::string> clipped;
   for (const auto& file : files) {
     const auto pano = EnvMap::read(file);
@@ -205,6 +214,7 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
     const Eigen::Vector3f peak(r["peak_direction"][0].get<float>(), r["peak_direction"][1].get<float>(), r["peak_direction"][2].get<float>());
     for (const auto& h : r["headings"]) {
       angles.push_back(h["peak_angular_error_deg"]);
+      (h["sun_in_view"].get<bool>() ? angles_in_view : angles_out_of_view).push_back(h["peak_angular_error_deg"]);
       logs_with_clipped.push_back(h["log10_intensity_error"]);
       if (!r["peak_clipped"].get<bool>()) logs.push_back(h["log10_intensity_error"]);
       const double heading = h["heading_deg"].get<double>() * M_PI / 180;
@@ -226,6 +236,8 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
           {"median_log10_intensity_error", median(logs)},
           {"median_log10_intensity_error_with_clipped", median(logs_with_clipped)},
           {"clipped_sun_panoramas", clipped},
+          {"sun_in_view", {{"headings", angles_in_view.size()}, {"median_angular_error_deg", median(angles_in_view)}}},
+          {"sun_out_of_view", {{"headings", angles_out_of_view.size()}, {"median_angular_error_deg", median(angles_out_of_view)}}},
           {"baseline_fixed_guess_median_angular_error_deg", median(baseline)},
           {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
 }

@@ -46,6 +46,7 @@ TEST(LightEstimate, ClearSkyWithTheSunInViewIsFoundWithinAFewDegrees) {
   const auto r = light::evaluate_on_panorama(panorama(p), "clear", 1, 240);
   const auto& front = heading(r, 0);
   EXPECT_EQ(front["sky_type"], "sunny");
+  EXPECT_TRUE(front["sun_in_view"].get<bool>());
   EXPECT_EQ(front["sun_cue"], "visible");
   EXPECT_LT(front["peak_angular_error_deg"].get<double>(), 3.0);
   EXPECT_LT(front["log10_intensity_error"].get<double>(), 0.5);
@@ -80,6 +81,7 @@ TEST(LightEstimate, SunBehindTheCarIsNotSeenAndLandsInTheRightHemisphere) {
   const auto r = light::evaluate_on_panorama(panorama(p), "behind", 1, 240);
   const auto& front = heading(r, 0);
   EXPECT_EQ(front["sky_type"], "sunny");
+  EXPECT_FALSE(front["sun_in_view"].get<bool>());
   EXPECT_NE(front["sun_cue"], "visible");
   EXPECT_LT(front["peak_angular_error_deg"].get<double>(), 90.0);
 }
