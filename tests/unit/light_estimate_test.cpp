@@ -1,6 +1,8 @@
 // Lighting estimation on analytic panoramas seen through the car's three front cameras (a clear
 // sky with the sun in view, the sun behind the car, an overcast sky, a bright window that must
-// not be taken for the sun) and on painted streets (cars' shadows, shadowless cars, the sky mask).
+// not be taken for the sun; the evaluation's check for a panorama whose own sun is clipped)
+// and on painted streets (cars' shadows, a pale strip in the sky mask, shadowless cars, the sky
+// mask).
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -108,6 +110,7 @@ TEST(LightEstimate, ABrightWindowInAFacadeIsNotTheSun) {
   const auto r = light::evaluate_on_panorama(env, "window", 1, 240);
   EXPECT_NE(heading(r, 0)["sun_cue"], "visible");
 }
+
 // A pale wall facing the sun, lit by the whole panorama (sun included), below the horizon
 // behind the car; then the same panorama with its sun clipped to the sky around it, as an HDRI
 // merged from too few exposures keeps it. Only the clipped one is flagged.
@@ -130,7 +133,6 @@ TEST(LightEval, APanoramaWhoseSunIsClippedIsFlaggedByItsOverbrightWall) {
   const auto r = light::evaluate_on_panorama(env, "clipped", 1, 240);
   EXPECT_TRUE(r["peak_clipped"].get<bool>()) << r.dump();
 }
-
 
 // A 320x200 front camera at `ego` looking along +x (world z up), each pixel coloured by its ray.
 light::LightView front_view(const Eigen::Vector3d& ego, int frame, const std::function<cv::Vec3b(const Eigen::Vector3d&)>& colour) {
@@ -207,7 +209,7 @@ TEST(LightEstimate, ShadowsOfCarsAtTwoInstantsGiveTheSun) {
 // sky mask with the sky (as parts of facades cut off by windows are on the demo street): the
 // shadows decide the sun, and the sky's level comes from the sky, not pulled up by the strip
 // (three times brighter, a third of the mask: a least-squares scale was 1.35 times too bright).
-TEST(LightEstimate, APaleStripInTheSkyMaskDoesNotRaiseTheSkyTheShadowsScale) {
+TEST(LightEstimate, APaleStripInTheSkyMaskDoesNotRaiseTheSkysScale) {
   const Eigen::Vector3d sun = dir_deg(100, 40).cast<double>();
   const cv::Vec3b blue(100, 125, 170);
   const auto s = street({{{0, 0, 1.6}, {9, 3.5, 0.75}}, {{4, 0, 1.6}, {14, -3.5, 0.75}}}, sun,
