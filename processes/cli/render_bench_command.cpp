@@ -74,19 +74,9 @@ int run_light(const LightArgs& a) {
   json report = render::light::evaluate_panoramas(a.hdri, a.headings, a.width, a.save_views, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
   std::vector<bench::ChartPoint> pts;
   for (const auto& r : report["panoramas"]) pts.push_back({r["panorama"], r["median_seconds"], r["median_angular_error_deg"]});
-  {
-    // All panoramas' headings in two groups: the sun inside a crop, or out of them.
-    std::vector<double> secs[2];
-    for (const auto& r : report["panoramas"])
-      for (const auto& h : r["headings"]) secs[h["sun_in_view"].get<bool>() ? 0 : 1].push_back(h["seconds"]);
-    const char* key[2] = {"sun_in_view", "sun_out_of_view"};
-    const char* label[2] = {"all: sun in a crop", "all: sun out of the crops"};
-    for (int g = 0; g < 2; ++g)
-      if (!secs[g].empty()) {
-        std::nth_element(secs[g].begin(), secs[g].begin() + long(secs[g].size() / 2), secs[g].end());
-        pts.push_back({label[g], secs[g][secs[g].size() / 2], report[key[g]]["median_angular_error_deg"]});
-      }
-  }
+  // All panoramas' headings in two groups: the sun inside a crop, or out of them.
+  for (const auto& [key, label] : {std::pair{"sun_in_view", "all: sun in a crop"}, {"sun_out_of_view", "all: sun out of the crops"}})
+    if (report[key]["headings"].get<int>() > 0) pts.push_back({label, report[key]["median_seconds"], report[key]["median_angular_error_deg"]});
   if (!a.scene.empty()) {
     // A scene with vehicles and their shadows, which the panoramas do not have.
     const auto s = scene::load_scene(a.scene);

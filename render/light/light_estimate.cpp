@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -70,23 +71,9 @@ Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(c
   }
   Fit f;
   if (exact.empty()) return f;
-  // The scale minimising the sum of squares (exact) plus the squared shortfalls (clipped): a
-  // convex 1-D problem; the fixed point of "mean over the exact and the short" is its minimum.
-  double b = 0;
-  for (double r : exact) b += r;
-  b /= double(exact.size());
-  for (int it = 0; it < 30; ++it) {
-    double sum = 0;
-    size_t n = exact.size();
-    for (double r : exact) sum += r;
-    for (double r : at_least)
-      if (r > b) sum += r, ++n;
-    const double next = sum / double(n);
-    if (std::abs(next - b) < 1e-6) break;
-    b = next;
-  }
-  const double band = std::log(kTrimFactor);
-  if (robust)
+  // The mean over the samples that count at scale b (the exact within `band` of it, the clipped
+  // short of the model by less than `band`), iterated to its fixed point.
+  const auto settle = [&](double b, double band) {
     for (int it = 0; it < 30; ++it) {
       double sum = 0;
       size_t n = 0;
@@ -99,6 +86,16 @@ Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(c
       if (std::abs(next - b) < 1e-6) break;
       b = next;
     }
+    return b;
+  };
+  // Without a band, the scale minimising the sum of squares (exact) plus the squared shortfalls
+  // (clipped): a convex 1-D problem whose minimum is that fixed point. Robust: from there, only
+  // the samples within the band.
+  double b = 0;
+  for (double r : exact) b += r;
+  b = settle(b / double(exact.size()), std::numeric_limits<double>::infinity());
+  const double band = std::log(kTrimFactor);
+  if (robust) b = settle(b, band);
   f.log_scale = b;
   const auto cost = [&](double d) { return robust ? std::min(d * d, band * band) : d * d; };
   double e = 0;

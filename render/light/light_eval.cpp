@@ -11,6 +11,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/scene/camera_model.hpp"
 #include "render/color.hpp"
 #include "render/equirect.hpp"
 #include "render/image_io.hpp"
@@ -161,10 +162,8 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
     // gradient and the scene's shading can tell where it is.
     bool in_view = false;
     for (const auto& v : views) {
-      const Eigen::Vector3d c = v.camera_to_world.linear().transpose() * truth.direction.cast<double>();
-      if (c.z() <= 0) continue;
-      const double u = v.camera.fx * c.x() / c.z() + v.camera.cx, w = v.camera.fy * c.y() / c.z() + v.camera.cy;
-      in_view |= u >= 0 && u < v.camera.width && w >= 0 && w < v.camera.height;
+      const auto p = scene::project(v.camera, v.camera_to_world, v.camera_to_world.translation() + 1e3 * truth.direction.cast<double>());
+      in_view |= p && p->in_image;
     }
     const auto t0 = std::chrono::steady_clock::now();
     const LightEstimate est = estimate_light(views);
@@ -206,7 +205,8 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
 nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int headings, int width, const std::string& save_dir,
                                   const std::function<void(const std::string&)>& progress) {
   nlohmann::json all = nlohmann::json::array();
-  std::vector<double> angles, logs, logs_with_clipped, baseline, angles_in_view, angles_out_of_view;
+  std::vector<double> angles, logs, logs_with_clipped, baseline;
+  std::vector<double> group_angles[2], group_seconds[2];  // the sun in a crop, out of them
   std::vector<std::string> clipped;
   for (const auto& file : files) {
     const auto pano = EnvMap::read(file);
@@ -214,7 +214,9 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
     const Eigen::Vector3f peak(r["peak_direction"][0].get<float>(), r["peak_direction"][1].get<float>(), r["peak_direction"][2].get<float>());
     for (const auto& h : r["headings"]) {
       angles.push_back(h["peak_angular_error_deg"]);
-      (h["sun_in_view"].get<bool>() ? angles_in_view : angles_out_of_view).push_back(h["peak_angular_error_deg"]);
+      const int group = h["sun_in_view"].get<bool>() ? 0 : 1;
+      group_angles[group].push_back(h["peak_angular_error_deg"]);
+      group_seconds[group].push_back(h["seconds"]);
       logs_with_clipped.push_back(h["log10_intensity_error"]);
       if (!r["peak_clipped"].get<bool>()) logs.push_back(h["log10_intensity_error"]);
       const double heading = h["heading_deg"].get<double>() * M_PI / 180;
@@ -236,8 +238,10 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
           {"median_log10_intensity_error", median(logs)},
           {"median_log10_intensity_error_with_clipped", median(logs_with_clipped)},
           {"clipped_sun_panoramas", clipped},
-          {"sun_in_view", {{"headings", angles_in_view.size()}, {"median_angular_error_deg", median(angles_in_view)}}},
-          {"sun_out_of_view", {{"headings", angles_out_of_view.size()}, {"median_angular_error_deg", median(angles_out_of_view)}}},
+          {"sun_in_view", {{"headings", group_angles[0].size()}, {"median_angular_error_deg", median(group_angles[0])},
+                           {"median_seconds", median(group_seconds[0])}}},
+          {"sun_out_of_view", {{"headings", group_angles[1].size()}, {"median_angular_error_deg", median(group_angles[1])},
+                               {"median_seconds", median(group_seconds[1])}}},
           {"baseline_fixed_guess_median_angular_error_deg", median(baseline)},
           {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
 }

@@ -44,10 +44,10 @@ nlohmann::json evaluate_on_panorama(const EnvMap& panorama, const std::string& n
 
 // Every panorama file (EXR or HDR) through evaluate_on_panorama, with the medians over all their
 // headings (the intensity's over panoramas whose sun is not clipped; with them too in
-// "median_log10_intensity_error_with_clipped"; the angle's also over the headings with the sun
-// in a crop and those without), the targets, and the baseline measured in the same run: a
-// fixed guess (the sun 45 degrees up, straight ahead of the car). `progress` gets one line per
-// panorama. Throws on a file that does not read, naming it.
+// "median_log10_intensity_error_with_clipped"; the angle's and the time's also over the
+// headings with the sun in a crop and those without), the targets, and the baseline measured
+// in the same run: a fixed guess (the sun 45 degrees up, straight ahead of the car).
+// `progress` gets one line per panorama. Throws on a file that does not read, naming it.
 nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int headings, int width, const std::string& save_dir = "",
                                   const std::function<void(const std::string&)>& progress = nullptr);
 
