@@ -453,8 +453,9 @@ class Planner {
     }
     // A vehicle that drives off the mapped lanes leaves the scene: its trajectory ends there.
     size_t keep = e.poses.size();
+    int lane_hint = c.lane;
     for (size_t f = 1; f < e.poses.size(); ++f)
-      if (scene_.lanes.containing({e.poses[f].x, e.poses[f].y}, 0.3).empty()) {
+      if (!scene_.lanes.on_some_lane({e.poses[f].x, e.poses[f].y}, 0.3, lane_hint)) {
         keep = f;
         break;
       }

@@ -23,6 +23,13 @@ LaneMap::LaneMap(std::vector<Lane> lanes) : lanes_(std::move(lanes)) {
     for (const auto& c : lane.centerline) box.extend(xy(c));
     if (!box.isEmpty()) box.min().array() -= lane.width / 2, box.max().array() += lane.width / 2;
     bounds_.push_back(box);
+    std::vector<Eigen::AlignedBox2d> chunks;
+    for (size_t first = 0; first + 1 < lane.centerline.size(); first += kSegmentsPerChunk) {
+      Eigen::AlignedBox2d chunk;
+      for (size_t i = first; i <= std::min(first + kSegmentsPerChunk, lane.centerline.size() - 1); ++i) chunk.extend(xy(lane.centerline[i]));
+      chunks.push_back(chunk);
+    }
+    chunk_bounds_.push_back(std::move(chunks));
   }
 }
 
@@ -34,23 +41,41 @@ int LaneMap::find(const std::string& id) const {
 
 LanePosition LaneMap::project(int index, const Eigen::Vector2d& p) const {
   const Lane& lane = lanes_.at(size_t(index));
+  const auto& chunks = chunk_bounds_[size_t(index)];
   LanePosition best{index, 0, 0, 0};
   double best_d2 = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i + 1 < lane.centerline.size(); ++i) {
-    const Eigen::Vector2d a = xy(lane.centerline[i]);
-    const Eigen::Vector2d d = xy(lane.centerline[i + 1]) - a;
-    const double len2 = d.squaredNorm();
-    if (len2 <= 0) continue;
-    const double t = std::clamp((p - a).dot(d) / len2, 0.0, 1.0);
-    const Eigen::Vector2d q = a + t * d;
-    const double d2 = (p - q).squaredNorm();
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best.s = lane.s[i] + t * std::sqrt(len2);
-      best.lateral = cross2(d, p - a) / std::sqrt(len2);
-      best.tangent_yaw = std::atan2(d.y(), d.x());
+  size_t best_i = 0;
+  auto try_chunk = [&](size_t c) {
+    const size_t end = std::min((c + 1) * kSegmentsPerChunk, lane.centerline.size() - 1);
+    for (size_t i = c * kSegmentsPerChunk; i < end; ++i) {
+      const Eigen::Vector2d a = xy(lane.centerline[i]);
+      const Eigen::Vector2d d = xy(lane.centerline[i + 1]) - a;
+      const double len2 = d.squaredNorm();
+      if (len2 <= 0) continue;
+      const double t = std::clamp((p - a).dot(d) / len2, 0.0, 1.0);
+      const Eigen::Vector2d q = a + t * d;
+      const double d2 = (p - q).squaredNorm();
+      // Ties go to the earlier segment (at a shared corner both are as close), whatever the
+      // order the chunks are visited in.
+      if (d2 < best_d2 || (d2 == best_d2 && i < best_i)) {
+        best_d2 = d2;
+        best_i = i;
+        best.s = lane.s[i] + t * std::sqrt(len2);
+        best.lateral = cross2(d, p - a) / std::sqrt(len2);
+        best.tangent_yaw = std::atan2(d.y(), d.x());
+      }
     }
-  }
+  };
+  // The nearest chunk first, then only the chunks whose bounds could hold a segment as close:
+  // a long centreline is mostly far from p.
+  size_t nearest = 0;
+  double nearest_d2 = std::numeric_limits<double>::infinity();
+  for (size_t c = 0; c < chunks.size(); ++c)
+    if (const double d2 = chunks[c].squaredExteriorDistance(p); d2 < nearest_d2) nearest_d2 = d2, nearest = c;
+  if (chunks.empty()) return best;
+  try_chunk(nearest);
+  for (size_t c = 0; c < chunks.size(); ++c)
+    if (c != nearest && chunks[c].squaredExteriorDistance(p) <= best_d2) try_chunk(c);
   return best;
 }
 
@@ -65,16 +90,30 @@ std::optional<LanePosition> LaneMap::nearest(const Eigen::Vector2d& p, const std
   return best;
 }
 
+std::optional<LanePosition> LaneMap::within(size_t i, const Eigen::Vector2d& p, double margin) const {
+  if (lanes_[i].centerline.size() < 2) return std::nullopt;
+  // Far from the lane's extent: not on it (the planner asks this for every pose it tries).
+  if (bounds_[i].exteriorDistance(p) > margin) return std::nullopt;
+  const auto pos = project(int(i), p);
+  const bool inside_extent = pos.s > 1e-6 && pos.s < lanes_[i].length() - 1e-6;
+  if (inside_extent && std::abs(pos.lateral) <= lanes_[i].width / 2 + margin) return pos;
+  return std::nullopt;
+}
+
+bool LaneMap::on_some_lane(const Eigen::Vector2d& p, double margin, int& hint) const {
+  if (hint >= 0 && size_t(hint) < lanes_.size() && within(size_t(hint), p, margin)) return true;
+  for (size_t i = 0; i < lanes_.size(); ++i)
+    if (int(i) != hint && within(i, p, margin)) {
+      hint = int(i);
+      return true;
+    }
+  return false;
+}
+
 std::vector<LanePosition> LaneMap::containing(const Eigen::Vector2d& p, double margin) const {
   std::vector<LanePosition> out;
-  for (size_t i = 0; i < lanes_.size(); ++i) {
-    if (lanes_[i].centerline.size() < 2) continue;
-    // Far from the lane's extent: not on it (the planner asks this for every pose it tries).
-    if (bounds_[i].exteriorDistance(p) > margin) continue;
-    const auto pos = project(int(i), p);
-    const bool inside_extent = pos.s > 1e-6 && pos.s < lanes_[i].length() - 1e-6;
-    if (inside_extent && std::abs(pos.lateral) <= lanes_[i].width / 2 + margin) out.push_back(pos);
-  }
+  for (size_t i = 0; i < lanes_.size(); ++i)
+    if (const auto pos = within(i, p, margin)) out.push_back(*pos);
   std::sort(out.begin(), out.end(),
             [](const LanePosition& a, const LanePosition& b) { return std::abs(a.lateral) < std::abs(b.lateral); });
   return out;

@@ -51,6 +51,9 @@ class LaneMap {
   std::optional<LanePosition> nearest(const Eigen::Vector2d& p, const std::string& type = "") const;
   // Lanes p lies on: within half the width of the centreline, inside the lane's extent.
   std::vector<LanePosition> containing(const Eigen::Vector2d& p, double margin = 0.0) const;
+  // Whether p lies on some lane (as `containing`, without ranking them all): `hint`, a lane tried
+  // first, is set to the lane found. A point along a path is mostly on the lane the one before was.
+  bool on_some_lane(const Eigen::Vector2d& p, double margin, int& hint) const;
   // Lanes with some centreline point within radius of p.
   std::vector<int> in_region(const Eigen::Vector2d& p, double radius) const;
 
@@ -62,8 +65,15 @@ class LaneMap {
   std::vector<LaneCrossing> crossings(int lane) const;
 
  private:
+  // p's position on lane i when p lies on it (within half its width plus margin, inside its extent).
+  std::optional<LanePosition> within(size_t i, const Eigen::Vector2d& p, double margin) const;
+
   std::vector<Lane> lanes_;
   std::vector<Eigen::AlignedBox2d> bounds_;  // each lane's centreline extent grown by half its width
+  // Each lane's centreline in chunks of kSegmentsPerChunk segments, and their bounds: projecting
+  // onto a long lane visits only the chunks that can hold its nearest point.
+  static constexpr size_t kSegmentsPerChunk = 16;
+  std::vector<std::vector<Eigen::AlignedBox2d>> chunk_bounds_;
 };
 
 }  // namespace chatsim::scene
