@@ -171,24 +171,30 @@ cv::Mat roi_mask(const cv::Rect& roi, const std::vector<std::vector<cv::Point>>&
 double outline_agreement(const cv::Mat& g, const cv::Mat& below_horizon, const cv::Mat& shadow, const cv::Mat& ring, const cv::Mat& blocked,
                           float dark) {
   // The ground: below the horizon and not the box.
-  const cv::Mat on_ground = below_horizon & ~blocked;
-  std::vector<float> ground;
-  for (int y = 0; y < g.rows; y += 2)
+  thread_local std::vector<float> ground;
+  ground.clear();
+  for (int y = 0; y < g.rows; y += 2) {
+    const uchar *b = below_horizon.ptr<uchar>(y), *k = blocked.ptr<uchar>(y);
+    const float* l = g.ptr<float>(y);
     for (int x = 0; x < g.cols; x += 2)
-      if (on_ground.at<uchar>(y, x)) ground.push_back(g.at<float>(y, x));
+      if (b[x] && !k[x]) ground.push_back(l[x]);
+  }
   if (ground.size() < 30) return 0;
   std::nth_element(ground.begin(), ground.begin() + long(ground.size() * 8 / 10), ground.end());
   const float lit = ground[ground.size() * 8 / 10];
   if (lit < 1.5f * dark) return 0;
   const float split = std::sqrt(lit * dark);
   long in_dark = 0, in_n = 0, around_lit = 0, around_n = 0;
-  for (int y = 0; y < g.rows; ++y)
+  for (int y = 0; y < g.rows; ++y) {
+    const uchar *b = below_horizon.ptr<uchar>(y), *k = blocked.ptr<uchar>(y), *sh = shadow.ptr<uchar>(y), *r = ring.ptr<uchar>(y);
+    const float* l = g.ptr<float>(y);
     for (int x = 0; x < g.cols; ++x) {
-      if (!on_ground.at<uchar>(y, x)) continue;
-      const bool d = g.at<float>(y, x) < split;
-      if (shadow.at<uchar>(y, x)) ++in_n, in_dark += d;
-      else if (ring.at<uchar>(y, x)) ++around_n, around_lit += !d;
+      if (!b[x] || k[x]) continue;
+      const bool d = l[x] < split;
+      if (sh[x]) ++in_n, in_dark += d;
+      else if (r[x]) ++around_n, around_lit += !d;
     }
+  }
   if (in_n == 0 || around_n == 0) return 0;
   return double(in_dark) / double(in_n) * double(around_lit) / double(around_n);
 }
@@ -230,16 +236,25 @@ ShadowCue shadow_cue(const std::vector<LightView>& views, const std::vector<cv::
       cv::dilate(shadow, ring, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * kRing + 1, 2 * kRing + 1)));  // a square: separable, fast
       ring.setTo(0, blocked | shadow);
       const cv::Mat g = gray[vi](roi);
-      auto median_of = [&](const cv::Mat& mask) {
-        std::vector<float> v;
-        for (int y = 0; y < mask.rows; ++y)
-          for (int x = 0; x < mask.cols; ++x)
-            if (mask.at<uchar>(y, x)) v.push_back(g.at<float>(y, x));
+      // The three medians from one pass, with buffers kept per thread: this runs for every
+      // box, view and candidate sun.
+      thread_local std::vector<float> in_v, around_v, side_v;
+      in_v.clear(), around_v.clear(), side_v.clear();
+      for (int y = 0; y < roi.height; ++y) {
+        const uchar *sh = shadow.ptr<uchar>(y), *r = ring.ptr<uchar>(y), *li = mirrored ? lit.ptr<uchar>(y) : nullptr;
+        const float* l = g.ptr<float>(y);
+        for (int x = 0; x < roi.width; ++x) {
+          if (sh[x]) in_v.push_back(l[x]);
+          if (r[x]) around_v.push_back(l[x]);
+          if (li && li[x]) side_v.push_back(l[x]);
+        }
+      }
+      auto median_of = [](std::vector<float>& v) {
         if (v.size() < 30) return -1.0f;
         std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
         return v[v.size() / 2];
       };
-      const float in = median_of(shadow), around = median_of(ring), other_side = mirrored ? median_of(lit) : -1.0f;
+      const float in = median_of(in_v), around = median_of(around_v), other_side = mirrored ? median_of(side_v) : -1.0f;
       if (in < 0 || around < 0) continue;
       // A shadow is darker than the ground just around it (it has edges: a direction whose
       // shadow covers only a sliver of a real one is not) and, where that side is in view,
