@@ -428,7 +428,7 @@ nlohmann::json LightEstimate::to_json(const std::string& sky_exr) const {
                    {"sky_mapping", std::string(kEquirectMapping) + "; the sun disc is not in the EXR; below the horizon a diffuse ground"},
                    {"sun_cue", sun_cue},
                    {"turbidity", sky.turbidity},
-                   {"fit_rms_log_error", std::sqrt(fit_error)},
+                   {"fit_rms_log_error", fit_error < 1e29 ? nlohmann::json(std::sqrt(fit_error)) : nlohmann::json(nullptr)},
                    {"sky_pixels", sky_pixels}};
   if (!sunny) j["sun_radiance_rgb"] = {0.0, 0.0, 0.0};
   return j;

@@ -2,7 +2,7 @@
 // sky with the sun in view, the sun behind the car, an overcast sky, a bright window that must
 // not be taken for the sun; the evaluation's check for a panorama whose own sun is clipped)
 // and on painted streets (cars' shadows, a pale strip in the sky mask, shadowless cars, the sky
-// mask).
+// mask, black, white and skyless frames).
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -246,6 +246,34 @@ TEST(LightEstimate, ShadowlessCarsUnderAClippedSkyAreOvercast) {
                         cv::Vec3b(100, 100, 100));
   const auto est = light::estimate_light(s.views, s.boxes);
   EXPECT_FALSE(est.sunny) << est.to_json("").dump();
+}
+
+// Degenerate input (a lens cap, a blown-out frame, a garage with no sky, no views at all) gives
+// a finite overcast estimate, not NaNs or a crash: there is no sun to find.
+TEST(LightEstimate, DegenerateImagesGiveAFiniteOvercastSky) {
+  const std::vector<std::pair<std::string, std::function<cv::Vec3b(const Eigen::Vector3d&)>>> cases = {
+      {"black", [](const Eigen::Vector3d&) { return cv::Vec3b(0, 0, 0); }},
+      {"white", [](const Eigen::Vector3d&) { return cv::Vec3b(255, 255, 255); }},
+      {"no sky", [](const Eigen::Vector3d& d) { return d.z() > 0 ? cv::Vec3b(60, 55, 50) : cv::Vec3b(90, 90, 90); }},
+  };
+  for (const auto& [name, colour] : cases) {
+    const auto s = street({{{0, 0, 1.6}, {9, 3.5, 0.75}}}, std::nullopt, colour, colour(Eigen::Vector3d(1, 0, -1).normalized()));
+    for (const auto& boxes : {s.boxes, std::vector<light::GroundBox>{}}) {
+      const auto est = light::estimate_light(s.views, boxes);
+      SCOPED_TRACE(name + (boxes.empty() ? ", no boxes" : ", one car"));
+      EXPECT_FALSE(est.sunny && est.sun_cue == "visible") << est.to_json("").dump();
+      EXPECT_TRUE(std::isfinite(est.scale)) << est.to_json("").dump();
+      EXPECT_TRUE(est.sun_radiance.allFinite());
+      // No unclipped sky measured: no fit error to report (it was printed as 1e15).
+      EXPECT_TRUE(est.to_json("")["fit_rms_log_error"].is_null()) << est.to_json("").dump();
+      const EnvMap dome = est.dome(32, 16);
+      for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 32; ++x) ASSERT_TRUE(dome.at(x, y).allFinite()) << x << "," << y;
+    }
+  }
+  const auto none = light::estimate_light({}, {});
+  EXPECT_FALSE(none.sunny);
+  EXPECT_TRUE(std::isfinite(none.scale));
 }
 
 // A smooth pale wall reaching from the top of the image to below the horizon is not sky (it
