@@ -66,13 +66,13 @@ LanePosition LaneMap::project(int index, const Eigen::Vector2d& p) const {
       }
     }
   };
+  if (chunks.empty()) return best;  // fewer than two centreline points
   // The nearest chunk first, then only the chunks whose bounds could hold a segment as close:
   // a long centreline is mostly far from p.
   size_t nearest = 0;
   double nearest_d2 = std::numeric_limits<double>::infinity();
   for (size_t c = 0; c < chunks.size(); ++c)
     if (const double d2 = chunks[c].squaredExteriorDistance(p); d2 < nearest_d2) nearest_d2 = d2, nearest = c;
-  if (chunks.empty()) return best;
   try_chunk(nearest);
   for (size_t c = 0; c < chunks.size(); ++c)
     if (c != nearest && chunks[c].squaredExteriorDistance(p) <= best_d2) try_chunk(c);
