@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <set>
 
@@ -59,7 +60,9 @@ Eigen::Vector3f from_angles(double az, double el) {
 // sample's cost capped there, so that specks of a pale roof or facade left in the sky mask
 // neither pull the scale (and with it the sun's intensity the shadows give) nor the direction.
 struct Fit {
-  double error = 1e30, log_scale = 0;
+  double error = 1e30, log_scale = 0;  // without unclipped samples: worse than any fit
+  bool measured = false;               // some unclipped sky sample was fitted
+  std::optional<double> reported() const { return measured ? std::optional<double>(error) : std::nullopt; }
 };
 constexpr double kTrimFactor = 1.5;
 Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(const Eigen::Vector3f&)>& model, bool robust) {
@@ -71,6 +74,7 @@ Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(c
   }
   Fit f;
   if (exact.empty()) return f;
+  f.measured = true;
   // The mean over the samples that count at scale b (the exact within `band` of it, the clipped
   // short of the model by less than `band`), iterated to its fixed point.
   const auto settle = [&](double b, double band) {
@@ -428,7 +432,7 @@ nlohmann::json LightEstimate::to_json(const std::string& sky_exr) const {
                    {"sky_mapping", std::string(kEquirectMapping) + "; the sun disc is not in the EXR; below the horizon a diffuse ground"},
                    {"sun_cue", sun_cue},
                    {"turbidity", sky.turbidity},
-                   {"fit_rms_log_error", fit_error < 1e29 ? nlohmann::json(std::sqrt(fit_error)) : nlohmann::json(nullptr)},
+                   {"fit_rms_log_error", fit_error ? nlohmann::json(std::sqrt(*fit_error)) : nlohmann::json(nullptr)},
                    {"sky_pixels", sky_pixels}};
   if (!sunny) j["sun_radiance_rgb"] = {0.0, 0.0, 0.0};
   return j;
@@ -581,12 +585,12 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
   if (!est.sunny) {
     est.sky.overcast = true;
     est.scale = float(std::exp(overcast.log_scale) / (est.sky.overcast_zenith_kcd * kUnitsPerKcd));
-    est.fit_error = overcast.error;
+    est.fit_error = overcast.reported();
     est.sun_cue = "none";
     return est;
   }
   est.scale = float(std::exp(best.fit.log_scale));
-  est.fit_error = best.fit.error;
+  est.fit_error = best.fit.reported();
   SkyParams p = est.sky;
   const Sky model(p);
   const Rgb model_sun = model.sun_radiance() * est.scale;

@@ -36,8 +36,9 @@ struct LightEstimate {
   float scale = 1;                    // the model's radiance multiplier that fits the images
   Rgb sun_radiance = Rgb::Zero();
   std::string sun_cue;                // "visible", "shadows", "sky_gradient", "none"
-  double fit_error = 0;               // mean squared log error on sky pixels (each capped at log 1.5 where vehicles
-                                      // were measured; 1e30: no unclipped sky pixel); to_json prints its root, or null
+  // Mean squared log error on sky pixels (each capped at log 1.5 where vehicles were measured);
+  // none without an unclipped sky pixel. to_json prints its root, or null.
+  std::optional<double> fit_error;
   int sky_pixels = 0;
 
   // The dome without the sun disc (below the horizon: a diffuse ground lit by it).
