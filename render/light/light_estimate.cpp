@@ -21,6 +21,7 @@ namespace chatsim::render::light {
 namespace {
 
 constexpr int kClipped = 250;
+constexpr unsigned kSkySampleSeed = 7;
 // The shadow evidence's weight against the sky fit's error: 0.15 before the outline agreement,
 // which lowers real shadows' evidence too. With it, 0.15 let the sky fit win on one of the five
 // demo scenes tried (seeds 1-5: its clip estimate 101 deg off); 0.3 did as well or better than
@@ -108,6 +109,43 @@ Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(c
     if (r > b) e += cost(r - b);
   f.error = e / double(exact.size() + at_least.size());
   return f;
+}
+
+// The clear (Preetham) sky's fit for one sun direction and turbidity.
+Fit clear_sky_fit(const std::vector<SkySample>& samples, const Eigen::Vector3f& sun, double turbidity, bool robust) {
+  SkyParams p;
+  p.sun_direction = sun;
+  p.turbidity = float(turbidity);
+  p.compute_ground = false;
+  const Sky sky(p);
+  return fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }, robust);
+}
+
+// Sky samples per view and kind (measured, clipped): about 1000 per instant's views.
+size_t sky_samples_per_view(const std::vector<LightView>& views) {
+  std::set<int> frames;
+  for (const auto& v : views) frames.insert(v.frame);
+  return size_t(std::max(200, 1000 / std::max<int>(1, int(frames.size()))));
+}
+
+// Sky samples of one view: random subsets of its measured and of its clipped sky pixels, each
+// capped on its own, so an overexposed sky does not crowd out the few pixels that say how
+// bright it is. Returns how many of its sky pixels are clipped.
+long sample_sky(const LightView& v, const cv::Mat& mask, size_t per_view, std::mt19937& rng, std::vector<SkySample>& out) {
+  std::vector<cv::Point> measured, clipped_px;
+  for (int y = 0; y < mask.rows; ++y)
+    for (int x = 0; x < mask.cols; ++x)
+      if (mask.at<uchar>(y, x)) {
+        const cv::Vec3b c = v.rgb.at<cv::Vec3b>(y, x);
+        (c[0] >= kClipped || c[1] >= kClipped || c[2] >= kClipped ? clipped_px : measured).emplace_back(x, y);
+      }
+  const long clipped_count = long(clipped_px.size());  // before the sampling caps it
+  for (auto* set : {&measured, &clipped_px}) {
+    std::shuffle(set->begin(), set->end(), rng);
+    if (set->size() > per_view) set->resize(per_view);
+    for (const auto& p : *set) out.push_back({pixel_dir(v, p.x, p.y), linear_pixel(v, v.rgb.at<cv::Vec3b>(p)), set == &clipped_px});
+  }
+  return clipped_count;
 }
 
 // How much darker the ground is where boxes would cast their shadows for a sun direction.
@@ -443,14 +481,14 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
   std::set<int> frames;
   for (const auto& v : views) frames.insert(v.frame);
   const int instants = std::max<int>(1, int(frames.size()));
-  std::mt19937 rng(7);
+  std::mt19937 rng(kSkySampleSeed);
   std::vector<SkySample> samples;
   double blue = 0;
   int blue_n = 0;
   Eigen::Vector3d sun_visible = Eigen::Vector3d::Zero();
   double sun_visible_area = 0;
   std::vector<cv::Mat> gray, below;  // linear luminance; ground directions (below the horizon)
-  const size_t per_view = size_t(std::max(200, 1000 / instants));  // sky samples per view and kind
+  const size_t per_view = sky_samples_per_view(views);
   long sky_clipped_px = 0;
   for (const auto& v : views) {
     const cv::Mat mask = sky_mask(v);
@@ -480,26 +518,10 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
       const SunBlob blob = find_sun_blob(v, mask, g, sky_median, level, clipped);
       if (blob.score > sun_visible_area) sun_visible_area = blob.score, sun_visible = blob.direction;
     }
-    // Sky samples: random subsets of the measured and of the clipped pixels, each capped on its
-    // own, so an overexposed sky does not crowd out the few pixels that say how bright it is.
-    std::vector<cv::Point> measured, clipped_px;
-    for (int y = 0; y < mask.rows; ++y)
-      for (int x = 0; x < mask.cols; ++x)
-        if (mask.at<uchar>(y, x)) {
-          const cv::Vec3b c = v.rgb.at<cv::Vec3b>(y, x);
-          (c[0] >= kClipped || c[1] >= kClipped || c[2] >= kClipped ? clipped_px : measured).emplace_back(x, y);
-        }
-    sky_clipped_px += long(clipped_px.size());
-    for (auto* set : {&measured, &clipped_px}) {
-      std::shuffle(set->begin(), set->end(), rng);
-      if (set->size() > per_view) set->resize(per_view);
-      for (const auto& p : *set) {
-        const cv::Vec3b c = v.rgb.at<cv::Vec3b>(p);
-        SkySample s{pixel_dir(v, p.x, p.y), linear_pixel(v, c), set == &clipped_px};
-        samples.push_back(s);
-        if (!s.clipped && s.radiance.x() > 0) blue += s.radiance.z() / s.radiance.x(), ++blue_n;
-      }
-    }
+    const size_t first = samples.size();
+    sky_clipped_px += sample_sky(v, mask, per_view, rng, samples);
+    for (size_t k = first; k < samples.size(); ++k)
+      if (!samples[k].clipped && samples[k].radiance.x() > 0) blue += samples[k].radiance.z() / samples[k].radiance.x(), ++blue_n;
     est.sky_pixels += cv::countNonZero(mask);
   }
   const double blue_ratio = blue_n > 0 ? blue / blue_n : 1.0;
@@ -523,12 +545,7 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
     if (!boxes.empty()) cue = shadow_cue(views, gray, below, boxes, from_angles(az, el).cast<double>(), instants);
     for (double T : turbidities) {
       if (T < 1.8) continue;
-      SkyParams p;
-      p.sun_direction = from_angles(az, el);
-      p.turbidity = float(T);
-      p.compute_ground = false;
-      const Sky sky(p);
-      Candidate c{az, el, T, 0, fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }, robust), cue};
+      Candidate c{az, el, T, 0, clear_sky_fit(samples, from_angles(az, el), T, robust), cue};
       c.cost = (samples.empty() ? 0.0 : c.fit.error) - kShadowWeight * cue.evidence;
       if (c.cost < best_t.cost) best_t = c;
     }
@@ -608,6 +625,34 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
     est.sun_radiance = model_sun;
   }
   return est;
+}
+
+SkyFitProbe probe_clear_sky(const std::vector<LightView>& views, const Eigen::Vector3f& sun) {
+  std::mt19937 rng(kSkySampleSeed);
+  const size_t per_view = sky_samples_per_view(views);
+  std::vector<SkySample> samples;
+  for (const auto& v : views) sample_sky(v, sky_mask(v), per_view, rng, samples);
+  const std::vector<double> turbidities{2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0};
+  auto best_over_turbidity = [&](const Eigen::Vector3f& d) {
+    Fit best;
+    for (double T : turbidities)
+      if (const Fit f = clear_sky_fit(samples, d, T, false); f.error < best.error) best = f;
+    return best;
+  };
+  // A sun on or under the horizon is fitted just above it, as the estimator's grid starts at 2 deg.
+  const double el = std::max(std::asin(std::clamp(double(sun.normalized().z()), -1.0, 1.0)), 2 * M_PI / 180);
+  const Fit at = best_over_turbidity(from_angles(std::atan2(sun.y(), sun.x()), el));
+  std::vector<Fit> grid(72 * 17);
+  parallel_for(int(grid.size()), [&](int i) { grid[size_t(i)] = best_over_turbidity(from_angles((i / 17) * 5 * M_PI / 180, (i % 17 + 1) * 5 * M_PI / 180)); });
+  size_t best = 0;
+  for (size_t i = 1; i < grid.size(); ++i)
+    if (grid[i].error < grid[best].error) best = i;
+  SkyFitProbe out;
+  const auto root = [](const Fit& f) { return f.measured ? std::optional<double>(std::sqrt(f.error)) : std::nullopt; };
+  out.rms_at = root(at);
+  out.rms_best = root(grid[best]);
+  out.best_direction = from_angles(double(best / 17) * 5 * M_PI / 180, double(best % 17 + 1) * 5 * M_PI / 180);
+  return out;
 }
 
 std::vector<LightView> scene_light_views(const scene::Scene& s, int frame) {

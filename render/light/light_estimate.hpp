@@ -49,6 +49,18 @@ struct LightEstimate {
 
 LightEstimate estimate_light(const std::vector<LightView>& views, const std::vector<GroundBox>& boxes = {});
 
+// What the sky alone says about the sun, for evaluation against a known sun: the clear
+// (Preetham) sky fitted to the sky samples estimate_light fits (without vehicles), at a given
+// sun direction and at the best direction of a 5-degree grid, each at its best turbidity.
+// Where the given (true) sun fits worse than the grid's best, no search over the sky's fit
+// alone can find it.
+struct SkyFitProbe {
+  std::optional<double> rms_at;    // root mean squared log error at the given direction (none: no unclipped sky)
+  std::optional<double> rms_best;  // ... at the grid's best direction
+  Eigen::Vector3f best_direction = Eigen::Vector3f::UnitZ();
+};
+SkyFitProbe probe_clear_sky(const std::vector<LightView>& views, const Eigen::Vector3f& sun);
+
 // The views and boxes of one frame of a scene (all its cameras).
 std::vector<LightView> scene_light_views(const scene::Scene& scene, int frame);
 std::vector<GroundBox> scene_ground_boxes(const scene::Scene& scene, int frame);

@@ -179,6 +179,12 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
       intensity = panorama_peak(dome).irradiance;
     }
     const double angle = angle_deg(dir, truth.direction);
+    // The sky's own say: how well it fits with the true sun against its best direction.
+    const SkyFitProbe probe = probe_clear_sky(views, truth.direction);
+    const auto or_null = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+    const nlohmann::json sky_alone{{"rms_log_error_at_true_sun", or_null(probe.rms_at)},
+                                   {"rms_log_error_at_best", or_null(probe.rms_best)},
+                                   {"best_angular_error_deg", angle_deg(probe.best_direction, truth.direction)}};
     const double log_ratio = std::log10(std::max(intensity, 1e-12) / std::max(truth.irradiance, 1e-12)), log_err = std::abs(log_ratio);
     angles.push_back(angle), logs.push_back(log_err), seconds.push_back(secs);
     sunny += est.sunny ? 1 : 0;
@@ -186,6 +192,7 @@ nlohmann::json evaluate_on_panorama(const EnvMap& pano, const std::string& name,
                        {"sun_cue", est.sun_cue}, {"peak_angular_error_deg", angle}, {"log10_intensity_error", log_err},
                        {"log10_intensity_ratio", log_ratio},  // signed: above 0, the estimate is too bright
                        {"estimated_direction", {dir.x(), dir.y(), dir.z()}},
+                       {"sky_alone", sky_alone},
                        {"seconds", secs}});
   }
   return {{"panorama", name},
@@ -207,6 +214,10 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
   nlohmann::json all = nlohmann::json::array();
   std::vector<double> angles, logs, logs_with_clipped, baseline;
   std::vector<double> group_angles[2], group_seconds[2];  // the sun in a crop, out of them
+  std::vector<double> group_sky_alone[2];                  // the sky fit's best direction's error
+  // Headings whose sky fits the true sun worse than its best direction, by more than 0.01 in
+  // RMS log error (1 %; the true sun is the panorama's brightest pixel, 0.7 deg wide).
+  int truth_fits_worse[2] = {0, 0};
   std::vector<std::string> clipped;
   for (const auto& file : files) {
     const auto pano = EnvMap::read(file);
@@ -217,6 +228,11 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
       const int group = h["sun_in_view"].get<bool>() ? 0 : 1;
       group_angles[group].push_back(h["peak_angular_error_deg"]);
       group_seconds[group].push_back(h["seconds"]);
+      const auto& sky = h["sky_alone"];
+      group_sky_alone[group].push_back(sky["best_angular_error_deg"]);
+      if (!sky["rms_log_error_at_true_sun"].is_null() && !sky["rms_log_error_at_best"].is_null() &&
+          sky["rms_log_error_at_true_sun"].get<double>() > sky["rms_log_error_at_best"].get<double>() + 0.01)
+        ++truth_fits_worse[group];
       logs_with_clipped.push_back(h["log10_intensity_error"]);
       if (!r["peak_clipped"].get<bool>()) logs.push_back(h["log10_intensity_error"]);
       const double heading = h["heading_deg"].get<double>() * M_PI / 180;
@@ -239,9 +255,11 @@ nlohmann::json evaluate_panoramas(const std::vector<std::string>& files, int hea
           {"median_log10_intensity_error_with_clipped", median(logs_with_clipped)},
           {"clipped_sun_panoramas", clipped},
           {"sun_in_view", {{"headings", group_angles[0].size()}, {"median_angular_error_deg", median(group_angles[0])},
-                           {"median_seconds", median(group_seconds[0])}}},
+                           {"median_seconds", median(group_seconds[0])}, {"sky_alone_median_angular_error_deg", median(group_sky_alone[0])},
+                           {"sky_fits_true_sun_worse", truth_fits_worse[0]}}},
           {"sun_out_of_view", {{"headings", group_angles[1].size()}, {"median_angular_error_deg", median(group_angles[1])},
-                               {"median_seconds", median(group_seconds[1])}}},
+                               {"median_seconds", median(group_seconds[1])}, {"sky_alone_median_angular_error_deg", median(group_sky_alone[1])},
+                               {"sky_fits_true_sun_worse", truth_fits_worse[1]}}},
           {"baseline_fixed_guess_median_angular_error_deg", median(baseline)},
           {"targets", {{"median_angular_error_deg", 15}, {"median_log10_intensity_error", 0.25}}}};
 }

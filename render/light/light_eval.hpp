@@ -3,7 +3,9 @@
 // degree field of view, 40 degrees apart) record LDR crops of it at several headings (auto
 // exposure, clipping, sRGB OETF), the estimator sees only those, and its sun is compared with
 // the panorama's own peak: angular error, and the log10 error of the peak's intensity (the
-// irradiance of the 5-degree cap around the peak above its surroundings).
+// irradiance of the 5-degree cap around the peak above its surroundings). Each heading also
+// reports what the sky alone says (probe_clear_sky at the panorama's sun): whether a search
+// over the sky's fit could find the sun at all.
 #include <functional>
 #include <string>
 #include <vector>
