@@ -64,6 +64,7 @@ struct Fit {
   double error = 1e30, log_scale = 0;  // without unclipped samples: worse than any fit
   bool measured = false;               // some unclipped sky sample was fitted
   std::optional<double> reported() const { return measured ? std::optional<double>(error) : std::nullopt; }
+  std::optional<double> reported_rms() const { return measured ? std::optional<double>(std::sqrt(error)) : std::nullopt; }
 };
 constexpr double kTrimFactor = 1.5;
 Fit fit_model(const std::vector<SkySample>& samples, const std::function<float(const Eigen::Vector3f&)>& model, bool robust) {
@@ -121,12 +122,21 @@ Fit clear_sky_fit(const std::vector<SkySample>& samples, const Eigen::Vector3f& 
   return fit_model(samples, [&](const Eigen::Vector3f& d) { return luminance(sky.radiance(d)); }, robust);
 }
 
-// Sky samples per view and kind (measured, clipped): about 1000 per instant's views.
-size_t sky_samples_per_view(const std::vector<LightView>& views) {
+// How many instants (frames) the views show: boxes are matched to the views of theirs.
+int count_instants(const std::vector<LightView>& views) {
   std::set<int> frames;
   for (const auto& v : views) frames.insert(v.frame);
-  return size_t(std::max(200, 1000 / std::max<int>(1, int(frames.size()))));
+  return std::max<int>(1, int(frames.size()));
 }
+
+// Sky samples per view and kind (measured, clipped): about 1000 per instant's views.
+size_t sky_samples_per_view(int instants) { return size_t(std::max(200, 1000 / instants)); }
+
+// The coarse grid of sun directions both searches use: 72 azimuths by 17 elevations (5-85 deg),
+// 5 degrees apart; direction i is azimuth i / 17, elevation i % 17.
+constexpr int kGridElevations = 17, kGridDirections = 72 * kGridElevations;
+double grid_azimuth(int i) { return (i / kGridElevations) * 5 * M_PI / 180; }
+double grid_elevation(int i) { return (i % kGridElevations + 1) * 5 * M_PI / 180; }
 
 // Sky samples of one view: random subsets of its measured and of its clipped sky pixels, each
 // capped on its own, so an overexposed sky does not crowd out the few pixels that say how
@@ -478,9 +488,7 @@ nlohmann::json LightEstimate::to_json(const std::string& sky_exr) const {
 
 LightEstimate estimate_light(const std::vector<LightView>& views, const std::vector<GroundBox>& boxes) {
   LightEstimate est;
-  std::set<int> frames;
-  for (const auto& v : views) frames.insert(v.frame);
-  const int instants = std::max<int>(1, int(frames.size()));
+  const int instants = count_instants(views);
   std::mt19937 rng(kSkySampleSeed);
   std::vector<SkySample> samples;
   double blue = 0;
@@ -488,7 +496,7 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
   Eigen::Vector3d sun_visible = Eigen::Vector3d::Zero();
   double sun_visible_area = 0;
   std::vector<cv::Mat> gray, below;  // linear luminance; ground directions (below the horizon)
-  const size_t per_view = sky_samples_per_view(views);
+  const size_t per_view = sky_samples_per_view(instants);
   long sky_clipped_px = 0;
   for (const auto& v : views) {
     const cv::Mat mask = sky_mask(v);
@@ -553,8 +561,8 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
   };
   // The sky fit over all directions, refined around its best.
   // Directions are independent: evaluated in parallel, the best taken in grid order.
-  std::vector<Candidate> grid(72 * 17);
-  parallel_for(int(grid.size()), [&](int i) { grid[size_t(i)] = evaluate((i / 17) * 5 * M_PI / 180, (i % 17 + 1) * 5 * M_PI / 180, {2.5, 4.0, 6.0}); });
+  std::vector<Candidate> grid(kGridDirections);
+  parallel_for(kGridDirections, [&](int i) { grid[size_t(i)] = evaluate(grid_azimuth(i), grid_elevation(i), {2.5, 4.0, 6.0}); });
   Candidate best{0, 0, 3, 1e30, {}, {}};
   for (const auto& c : grid)
     if (c.cost < best.cost) best = c;
@@ -629,7 +637,7 @@ LightEstimate estimate_light(const std::vector<LightView>& views, const std::vec
 
 SkyFitProbe probe_clear_sky(const std::vector<LightView>& views, const Eigen::Vector3f& sun) {
   std::mt19937 rng(kSkySampleSeed);
-  const size_t per_view = sky_samples_per_view(views);
+  const size_t per_view = sky_samples_per_view(count_instants(views));
   std::vector<SkySample> samples;
   for (const auto& v : views) sample_sky(v, sky_mask(v), per_view, rng, samples);
   const std::vector<double> turbidities{2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0};
@@ -642,16 +650,15 @@ SkyFitProbe probe_clear_sky(const std::vector<LightView>& views, const Eigen::Ve
   // A sun on or under the horizon is fitted just above it, as the estimator's grid starts at 2 deg.
   const double el = std::max(std::asin(std::clamp(double(sun.normalized().z()), -1.0, 1.0)), 2 * M_PI / 180);
   const Fit at = best_over_turbidity(from_angles(std::atan2(sun.y(), sun.x()), el));
-  std::vector<Fit> grid(72 * 17);
-  parallel_for(int(grid.size()), [&](int i) { grid[size_t(i)] = best_over_turbidity(from_angles((i / 17) * 5 * M_PI / 180, (i % 17 + 1) * 5 * M_PI / 180)); });
-  size_t best = 0;
-  for (size_t i = 1; i < grid.size(); ++i)
-    if (grid[i].error < grid[best].error) best = i;
+  std::vector<Fit> grid(kGridDirections);
+  parallel_for(kGridDirections, [&](int i) { grid[size_t(i)] = best_over_turbidity(from_angles(grid_azimuth(i), grid_elevation(i))); });
+  int best = 0;
+  for (int i = 1; i < kGridDirections; ++i)
+    if (grid[size_t(i)].error < grid[size_t(best)].error) best = i;
   SkyFitProbe out;
-  const auto root = [](const Fit& f) { return f.measured ? std::optional<double>(std::sqrt(f.error)) : std::nullopt; };
-  out.rms_at = root(at);
-  out.rms_best = root(grid[best]);
-  out.best_direction = from_angles(double(best / 17) * 5 * M_PI / 180, double(best % 17 + 1) * 5 * M_PI / 180);
+  out.rms_at = at.reported_rms();
+  out.rms_best = grid[size_t(best)].reported_rms();
+  out.best_direction = from_angles(grid_azimuth(best), grid_elevation(best));
   return out;
 }
 
