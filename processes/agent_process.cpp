@@ -101,7 +101,8 @@ bus::Node::Reply answer_chat_request(agents::Agent& agent, const PathPolicy& pol
                                 {"conversation_id", conversation},
                                 {"render", req->render()},
                                 {"output_dir", bus::view(req->output_dir())},
-                                {"preset", bus::view(req->preset())}}};
+                                {"preset", bus::view(req->preset())},
+                                {"force_output", req->force_output()}}};
   const auto refused = refuse_paths(policy, call);
   const auto out = refused ? *refused : agent.handle(call);
   const auto error = error_of(fbb, out, node);

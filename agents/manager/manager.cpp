@@ -6,6 +6,7 @@
 #include "agents/core/scene_cache.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
+#include "common/util/output_dir.hpp"
 #include "common/util/preset_names.hpp"
 
 namespace chatsim::agents::manager {
@@ -451,15 +452,25 @@ class ManagerAgent : public Agent {
     if (!preset.empty() && !is_preset_name(preset))
       return AgentOutcome::failure(ErrorKind::BadRequest,
                                    "unknown rendering preset '" + preset + "' (use " + std::string(kPresetChoices) + ")");
+    const bool render = call.args.value("render", false);
+    const std::string out = call.args.value("output_dir", std::string());
+    const bool force = call.args.value("force_output", false);
+    if (render) {
+      if (out.empty()) return AgentOutcome::failure(ErrorKind::BadRequest, "rendering needs an output folder (output_dir)");
+      if (!renderer_)
+        return AgentOutcome::failure(ErrorKind::NotImplemented, "this manager was started without the rendering pipeline");
+      // Also before the round changes the conversation: a folder it may not write costs nothing.
+      try {
+        check_render_output(out, call.scene, force);
+      } catch (const OutputDirError& e) {
+        return AgentOutcome::failure(ErrorKind::BadRequest, e.what());
+      }
+    }
     try {
       const auto r = manager_.chat(id, call.scene, call.args.value("command", std::string()));
       json result{{"message", r.message}, {"edit_state", r.edit_state}};
-      if (call.args.value("render", false)) {
-        const std::string out = call.args.value("output_dir", std::string());
-        if (out.empty()) return AgentOutcome::failure(ErrorKind::BadRequest, "rendering needs an output folder (output_dir)");
-        if (!renderer_)
-          return AgentOutcome::failure(ErrorKind::NotImplemented, "this manager was started without the rendering pipeline");
-        const AgentOutcome rendered = renderer_(call.scene, r.edit_state, out, preset);
+      if (render) {
+        const AgentOutcome rendered = renderer_(call.scene, r.edit_state, out, preset, force);
         if (!rendered.ok) {
           AgentOutcome failed = rendered;
           failed.message = "the decisions were made (" + r.message + ") but rendering failed: " + rendered.message;
@@ -485,6 +496,11 @@ class ManagerAgent : public Agent {
 };
 
 }  // namespace
+
+void check_render_output(const std::string& out, const std::string& scene, bool force) {
+  refuse_output_over_input(out, scene, "--out", "--scene");
+  check_output_dir(out, "result", force);
+}
 
 std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend, Renderer renderer) {
   return std::make_unique<ManagerAgent>(std::move(caller), std::move(backend), std::move(renderer));

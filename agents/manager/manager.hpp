@@ -93,11 +93,17 @@ class Manager {
 };
 
 // Renders an edit state into output_dir with a preset (draft, fast or quality; empty: fast) (the
-// rendering pipeline; see agents/render). Returns the result's summary, or a failure saying why.
+// rendering pipeline; see agents/render); force_output: output_dir may hold a chatsim output of
+// another kind. Returns the result's summary, or a failure saying why.
 using Renderer = std::function<AgentOutcome(const std::string& scene_dir, const nlohmann::json& edit_state,
-                                            const std::string& output_dir, const std::string& preset)>;
+                                            const std::string& output_dir, const std::string& preset, bool force_output)>;
 
-// The manager as an Agent: action "chat" (args: command, conversation_id, render, output_dir, preset)
+// Checks, before any work, the folder a rendered round writes: new, empty or a result chatsim
+// wrote (with force, any output chatsim wrote), and neither the scene nor a folder holding it.
+// Throws OutputDirError saying what is wrong and the fix.
+void check_render_output(const std::string& out, const std::string& scene, bool force);
+
+// The manager as an Agent: action "chat" (args: command, conversation_id, render, output_dir, preset, force_output)
 // and "reset". With render true, the round's edit state is rendered by `renderer` (none: the
 // manager says it cannot render).
 std::unique_ptr<Agent> make_manager_agent(AgentCaller caller, std::shared_ptr<llm::Backend> backend, Renderer renderer = {});

@@ -70,11 +70,12 @@ std::unique_ptr<Agent> make_rendering_manager(manager::AgentCaller caller, const
                                               manager::FanoutCaller fanout) {
   std::shared_ptr<llm::Backend> backend = llm::make_backend();
   manager::Renderer renderer = [caller, progress, fanout](const std::string& scene, const nlohmann::json& edit,
-                                                          const std::string& out, const std::string& preset) {
+                                                          const std::string& out, const std::string& preset, bool force) {
     RenderTask task;
     task.scene_dir = scene;
     task.edit_state = edit;
     task.output_dir = out;
+    task.force_output = force;
     const RenderPreset p = render_preset(preset);  // the manager checked the name
     task.preset = p.model;
     task.foreground_spp = p.foreground_spp;

@@ -3,13 +3,12 @@
 #include <chrono>
 #include <fstream>
 
-#include <unistd.h>
-
 #include "agents/core/scene_cache.hpp"
 #include "agents/render/render_cache.hpp"
 #include "agents/render/render_job.hpp"
 #include "agents/render/result_writer.hpp"
 #include "render/image_io.hpp"
+#include "common/util/output_dir.hpp"
 #include "common/util/preset_names.hpp"
 
 namespace chatsim::agents::render {
@@ -73,6 +72,69 @@ StageRun run_stage(const manager::AgentCaller& call, const manager::FanoutCaller
   return finish();
 }
 
+// Cameras left to right for the video: by the yaw of their optical axis in the ego frame.
+std::vector<std::string> cameras_left_to_right(const scene::Scene& s) {
+  std::vector<std::string> order;
+  for (const auto& c : s.cameras) order.push_back(c.name);
+  auto yaw = [&](const std::string& n) {
+    const Eigen::Vector3d z = s.camera(n)->sensor_to_ego.linear().col(2);
+    return std::atan2(z.y(), z.x());
+  };
+  std::sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) { return yaw(a) > yaw(b); });
+  return order;
+}
+
+// What composition wrote, for result.json.
+struct Composed {
+  size_t images = 0, frames = 0;
+  std::vector<std::string> cameras;  // left to right
+  std::string codec;
+};
+
+// The last stage's images into dir: PNG frames and depth per camera, the side-by-side video,
+// labels (JSON, KITTI) and edit.json.
+Composed compose_result(const scene::Scene& s, const RenderJob& job, const fs::path& last, const json& edit, const fs::path& dir,
+                        const PipelineProgress& progress) {
+  Composed c;
+  const auto images = view_images(s, job, nullptr);
+  c.images = images.size();
+  c.cameras = cameras_left_to_right(s);
+  std::map<int, std::map<std::string, cv::Mat>> by_frame;
+  size_t done = 0;
+  for (const auto& im : images) {
+    const cv::Mat radiance = chatsim::render::read_float_image(radiance_file(last, im.camera, im.frame));
+    const double exposure = read_exposure(last, im.camera, im.frame);
+    const cv::Mat rgb = chatsim::render::encode_srgb8(radiance, float(exposure));
+    char name[32];
+    std::snprintf(name, sizeof name, "%06d", im.frame);
+    chatsim::render::write_rgb8(dir / "frames" / im.camera / (std::string(name) + ".png"), rgb);
+    const fs::path d = depth_file(last, im.camera, im.frame);
+    if (fs::exists(d)) {
+      fs::create_directories(dir / "depth" / im.camera);
+      fs::copy_file(d, dir / "depth" / im.camera / (std::string(name) + ".exr"));
+    }
+    by_frame[im.frame][im.camera] = rgb;
+    if (progress && (++done % 12 == 0 || done == images.size()))
+      progress("composition", double(done) / double(images.size()), "composition: " + std::to_string(done) + "/" + std::to_string(images.size()) + " images");
+  }
+  c.frames = by_frame.size();
+  std::vector<std::vector<cv::Mat>> video;
+  for (const auto& [f, cams] : by_frame) {
+    std::vector<cv::Mat> row;
+    for (const auto& n : c.cameras)
+      if (cams.count(n)) row.push_back(cams.at(n));
+    if (row.size() == c.cameras.size()) video.push_back(row);
+  }
+  if (progress) progress("encoding", 0, "encoding: video and labels");
+  c.codec = write_side_by_side_video(dir / "video.mp4", video, s.frame_rate_hz);
+  const json labels = edited_labels(s, edit, images);
+  fs::create_directories(dir / "labels");
+  std::ofstream(dir / "labels" / "labels.json") << labels.dump(1) << "\n";
+  write_kitti_labels(labels, images, dir / "labels" / "kitti");
+  std::ofstream(dir / "edit.json") << edit.dump(1) << "\n";
+  return c;
+}
+
 }  // namespace
 
 RenderPreset render_preset(const std::string& name) {
@@ -91,6 +153,9 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
     if (s->layout_only)
       return AgentOutcome::failure(ErrorKind::BadRequest, s->dir.string() + " is a layout-only scene: it has no images to render "
                                                                            "(render the demo scene without --layout-only)");
+    // Before any work: a folder it may not write is refused now, not after training.
+    refuse_output_over_input(task.output_dir, s->dir, "--out", "--scene");
+    StagedOutputDir staged(task.output_dir, "result", task.force_output);
     const json& edit = task.edit_state;
     const view::ViewState view = view::view_state_from_json(edit.value("view", json::object()));
     std::vector<std::string> removed = edit.value("removed", std::vector<std::string>{});
@@ -168,69 +233,25 @@ AgentOutcome render_edit(const manager::AgentCaller& call, const RenderTask& tas
       timings["foreground"] = fg.seconds, reuse["foreground"] = fg.reused;
       last = fj.out, last_key = key;
     }
-    // Composition and encoding into the result folder (complete or absent: temporary name first).
+    // Composition and encoding into the result folder (complete or absent: written aside first).
     const auto t_enc = std::chrono::steady_clock::now();
-    const fs::path out = fs::absolute(task.output_dir).lexically_normal();
-    const fs::path tmp = out.string() + ".part" + std::to_string(getpid());
-    fs::remove_all(tmp);
-    fs::create_directories(tmp);
-    const auto images = view_images(*s, job, nullptr);
-    // Cameras left to right for the video: by the yaw of their optical axis in the ego frame.
-    std::vector<std::string> order;
-    for (const auto& c : s->cameras) order.push_back(c.name);
-    std::sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) {
-      auto yaw = [&](const std::string& n) {
-        const Eigen::Vector3d z = s->camera(n)->sensor_to_ego.linear().col(2);
-        return std::atan2(z.y(), z.x());
-      };
-      return yaw(a) > yaw(b);
-    });
-    std::map<int, std::map<std::string, cv::Mat>> by_frame;
-    size_t done = 0;
-    for (const auto& im : images) {
-      const cv::Mat radiance = chatsim::render::read_float_image(radiance_file(last, im.camera, im.frame));
-      const double exposure = read_exposure(last, im.camera, im.frame);
-      const cv::Mat rgb = chatsim::render::encode_srgb8(radiance, float(exposure));
-      char name[32];
-      std::snprintf(name, sizeof name, "%06d", im.frame);
-      chatsim::render::write_rgb8(tmp / "frames" / im.camera / (std::string(name) + ".png"), rgb);
-      const fs::path d = depth_file(last, im.camera, im.frame);
-      if (fs::exists(d)) {
-        fs::create_directories(tmp / "depth" / im.camera);
-        fs::copy_file(d, tmp / "depth" / im.camera / (std::string(name) + ".exr"));
-      }
-      by_frame[im.frame][im.camera] = rgb;
-      if (progress && (++done % 12 == 0 || done == images.size()))
-        progress("composition", double(done) / double(images.size()), "composition: " + std::to_string(done) + "/" + std::to_string(images.size()) + " images");
-    }
-    std::vector<std::vector<cv::Mat>> video;
-    for (const auto& [f, cams] : by_frame) {
-      std::vector<cv::Mat> row;
-      for (const auto& n : order)
-        if (cams.count(n)) row.push_back(cams.at(n));
-      if (row.size() == order.size()) video.push_back(row);
-    }
-    if (progress) progress("encoding", 0, "encoding: video and labels");
-    const std::string codec = write_side_by_side_video(tmp / "video.mp4", video, s->frame_rate_hz);
-    const json labels = edited_labels(*s, edit, images);
-    fs::create_directories(tmp / "labels");
-    std::ofstream(tmp / "labels" / "labels.json") << labels.dump(1) << "\n";
-    write_kitti_labels(labels, images, tmp / "labels" / "kitti");
-    std::ofstream(tmp / "edit.json") << edit.dump(1) << "\n";
+    const Composed c = compose_result(*s, job, last, edit, staged.path(), progress);
     timings["composition_and_encoding"] = seconds_since(t_enc);
     timings["total"] = seconds_since(t_all);
-    const json summary{{"scene", s->dir.string()}, {"images", images.size()}, {"frames", by_frame.size()}, {"cameras", order},
-                       {"video", (out / "video.mp4").string()}, {"video_codec", codec}, {"seconds", timings},
+    const fs::path& out = staged.target();
+    const json summary{{"scene", s->dir.string()}, {"images", c.images}, {"frames", c.frames}, {"cameras", c.cameras},
+                       {"video", (out / "video.mp4").string()}, {"video_codec", c.codec}, {"seconds", timings},
                        {"reused", reuse}, {"model", model}};
-    std::ofstream(tmp / "result.json") << summary.dump(1) << "\n";
-    fs::remove_all(out);
-    fs::rename(tmp, out);
+    std::ofstream(staged.path() / "result.json") << summary.dump(1) << "\n";
+    staged.commit();
     if (progress) progress("encoding", 1, "done: " + (out / "video.mp4").string());
     json result = summary;
     result["output_dir"] = out.string();
     return AgentOutcome::success(result);
   } catch (const scene::SceneError& e) {
     return AgentOutcome::failure(ErrorKind::BadRequest, std::string("bad scene: ") + e.what());
+  } catch (const OutputDirError& e) {
+    return AgentOutcome::failure(ErrorKind::BadRequest, e.what());
   } catch (const std::exception& e) {
     return AgentOutcome::failure(ErrorKind::Internal, e.what());
   }

@@ -4,7 +4,8 @@
 // its agent through the caller (over the bus in the processes), each stage's output cached
 // under a key of what it depends on, so a later round renders only what changed. The result
 // folder gets per-camera PNG frames, depth, the side-by-side video, labels (JSON and KITTI) and
-// edit.json, written under a temporary name and renamed when complete.
+// edit.json, written under a temporary name and swapped in when complete. It must be new, empty
+// or a result chatsim wrote (common/util/output_dir.hpp): anything else is refused before any work.
 #include <functional>
 #include <string>
 
@@ -22,6 +23,7 @@ struct RenderTask {
   std::string preset = "fast";      // radiance field preset
   int chunk = 12;                   // images per request to the background and foreground agents
   int foreground_spp = 32;
+  bool force_output = false;        // output_dir may hold a chatsim output of another kind (--force)
 };
 
 // The rendering presets a user picks (chatsim run --preset): the radiance field's preset and

@@ -6,18 +6,21 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
+#include "common/bag/mcap_bytes.hpp"
 #include "common/bag/mcap_reader.hpp"
 #include "common/bag/mcap_writer.hpp"
 #include "common/bus/message_json.hpp"
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
 #include "common/util/clock.hpp"
+#include "common/util/output_dir.hpp"
 
 namespace chatsim::bag {
 namespace fs = std::filesystem;
@@ -55,8 +58,27 @@ std::string base64(std::string_view in) {
   return out;
 }
 
+void check_recording_path(const fs::path& out, bool force) {
+  const fs::path file = prepare_output_file(out, "--output");
+  const fs::path part = file.string() + ".part";
+  if (fs::exists(part))
+    throw OutputDirError("--output " + file.string() + ": an interrupted recording is there (" + part.string() +
+                         "): move it away or remove it, or choose another name");
+  if (!fs::exists(file)) return;
+  std::ifstream in(file, std::ios::binary);
+  char head[8] = {};
+  const bool mcap = in.read(head, 8) && std::equal(head, head + 8, mcap::kMagic);
+  if (!mcap)
+    throw OutputDirError("--output " + file.string() + " exists and is not an MCAP recording: choose another name "
+                         "(--force replaces only recordings)");
+  if (!force)
+    throw OutputDirError("--output " + file.string() + ": a recording is there already: choose another name, or pass "
+                         "--force to replace it");
+}
+
 RecordReport record(const RecordOptions& o, const std::atomic<bool>& stop,
                     const std::function<void(const RecordReport&)>& progress) {
+  check_recording_path(o.out, o.force);
   const bus::MessagePrinter schema_source;  // the binary schema goes into the file
   const fs::path part = o.out.string() + ".part";
   McapWriter writer(part, {});

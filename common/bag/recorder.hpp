@@ -15,9 +15,15 @@ struct RecordOptions {
   bool all = false;
   double duration_s = 0;             // 0: until stopped
   std::filesystem::path out;
+  bool force = false;                // replace a recording (an MCAP file) already at `out`
   size_t max_queue_bytes = size_t(1) << 30;
   std::atomic<bool>* ready = nullptr;  // set once subscribed (benchmarks wait for it)
 };
+
+// Checks, before recording, that `out` may be written: no folder, no file but (with force) an
+// earlier recording, and no interrupted recording (`out`.part) to overwrite. Throws
+// OutputDirError (common/util/output_dir.hpp) saying what is wrong and the fix.
+void check_recording_path(const std::filesystem::path& out, bool force);
 
 struct RecordReport {
   uint64_t messages = 0;      // written

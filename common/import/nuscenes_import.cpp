@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "common/scene/camera_model.hpp"
+#include "common/util/output_dir.hpp"
 
 namespace chatsim::import {
 namespace fs = std::filesystem;
@@ -73,6 +74,8 @@ std::vector<Eigen::Vector3d> offset_line(const std::vector<Eigen::Vector3d>& lin
 }  // namespace
 
 scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, const Progress& progress, std::map<int, FrameLevel>* levels) {
+  StagedOutputDir staged(out, "scene", o.force_output);  // refused before anything is read
+  const fs::path& tmp = staged.path();
   const fs::path tables = o.dataroot / o.version;
   const json scenes = read_table(tables, "scene");
   const auto samples = by_token(read_table(tables, "sample"));
@@ -136,9 +139,6 @@ scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, cons
       pose_of(ego_poses.at(first.at("LIDAR_TOP")->at("ego_pose_token").get<std::string>())).inverse();
   const double t0 = first.at("LIDAR_TOP")->at("timestamp").get<double>() * 1e-6;
 
-  const fs::path tmp = out.string() + ".tmp";
-  fs::remove_all(tmp);
-  fs::create_directories(tmp);
   const int total = int(sample_tokens.size());
   for (size_t f = 0; f < sample_tokens.size(); ++f) {
     const auto& sd = by_sample.at(sample_tokens[f]);
@@ -303,9 +303,8 @@ scene::Scene import_nuscenes(const NuScenesOptions& o, const fs::path& out, cons
                               {"right_of_ego", "driving", 3.5, offset_line(centre, -3.5), scene::TrafficDirection::Both, {}}});
   }
   scene::save_scene(s, tmp);
-  fs::remove_all(out);
-  fs::rename(tmp, out);
-  s.dir = out;
+  staged.commit();
+  s.dir = staged.target();
   return s;
 }
 

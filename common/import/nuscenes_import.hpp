@@ -23,6 +23,7 @@ struct NuScenesOptions {
   bool lidar = true;
   bool estimate_colors = true;
   bool level_frames = true;                  // fit each frame's height and tilt to the static boxes (level_frames.hpp)
+  bool force_output = false;                 // replace a chatsim output of another kind at `out` (--force)
 };
 
 class ImportError : public std::runtime_error {
@@ -33,7 +34,9 @@ class ImportError : public std::runtime_error {
 // Progress: (done, total, what).
 using Progress = std::function<void(int, int, const std::string&)>;
 
-// Writes the scene to out (through a temporary folder renamed when complete) and returns it;
+// Writes the scene to out (new, empty or a scene chatsim wrote: common/util/output_dir.hpp;
+// through a temporary folder swapped in when complete) and returns it; OutputDirError for any
+// other folder, before anything is read;
 // `levels`, when given, receives the frames' height and tilt corrections (empty: none applied).
 scene::Scene import_nuscenes(const NuScenesOptions& options, const std::filesystem::path& out,
                              const Progress& progress = {}, std::map<int, FrameLevel>* levels = nullptr);

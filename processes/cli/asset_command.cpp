@@ -7,6 +7,7 @@
 #include "agents/asset/catalog.hpp"
 #include "agents/foreground/asset_bank.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "processes/cli/commands.hpp"
 #include "render/image_io.hpp"
 #include "render/path_tracer.hpp"
@@ -38,6 +39,7 @@ int run_list() {
 
 int run_preview(const PreviewArgs& a) {
   try {
+    prepare_output_file(a.out);  // before rendering
     std::array<int, 3> rgb{200, 30, 30};
     if (a.color.size() == 3) rgb = {a.color[0], a.color[1], a.color[2]};
     render::AssetModel model;
@@ -113,7 +115,7 @@ void add_asset_command(CLI::App& app, int& result) {
   auto* preview = asset->add_subcommand("preview", "Path-trace one asset (a catalogue name or a .glb/.gltf/.obj file) "
                                                    "on a grey ground under a clear sky");
   preview->add_option("asset", args->asset, "catalogue name or model file")->required();
-  preview->add_option("--out", args->out, "PNG to write");
+  preview->add_option("--out", args->out, "PNG to write (replaced)")->capture_default_str();
   preview->add_option("--color", args->color, "paint colour R G B (0..255)")->expected(3);
   preview->add_option("--width", args->width, "image width")->check(CLI::Range(16, 8192));
   preview->add_option("--height", args->height, "image height")->check(CLI::Range(16, 8192));

@@ -23,7 +23,7 @@ struct BagArgs {
   double duration_s = 0;
   std::string file;
   double rate = 1.0;
-  bool loop = false;
+  bool loop = false, force = false;
 };
 
 std::string endpoint(const std::string& bus) { return bus.empty() ? bus::default_bus_endpoint() : bus; }
@@ -39,6 +39,8 @@ int run_record(const BagArgs& a) {
   o.all = a.all;
   o.duration_s = a.duration_s;
   o.out = a.out.empty() ? "chatsim-" + std::to_string(std::time(nullptr)) + ".mcap" : a.out;
+  o.force = a.force;
+  bag::check_recording_path(o.out, o.force);  // before connecting
   const auto& stop = install_stop_signals();
   std::cerr << "recording " << (a.all ? "every topic" : std::to_string(a.topics.size()) + " topic(s)") << " from " << o.bus
             << " to " << o.out.string() << " (Ctrl-C stops)\n";
@@ -99,7 +101,9 @@ void add_bag_command(CLI::App& app, int& result) {
                                             "zstd chunks, indexes, summary; compressed images also as foxglove.CompressedImage");
   rec->add_option("topics", args->topics, "exact topics to record");
   rec->add_flag("--all", args->all, "record every topic (probe topics excepted)");
-  rec->add_option("-o,--output", args->out, "output file (default chatsim-<time>.mcap); written as FILE.part until complete");
+  rec->add_option("-o,--output", args->out, "output file (default chatsim-<time>.mcap); written as FILE.part until complete; "
+                                            "an existing file is refused");
+  rec->add_flag("--force", args->force, "replace an earlier recording at --output (never a file that is not one)");
   rec->add_option("--duration-s", args->duration_s, "stop after this long (default: until Ctrl-C)");
   rec->add_option("--bus", args->bus, "bus endpoint (default: $CHATSIM_BUS or tcp://127.0.0.1:7700)");
   rec->callback([args, &result] { result = exit_code_of([&] { return run_record(*args); }); });

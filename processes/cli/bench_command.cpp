@@ -7,6 +7,7 @@
 #include "bench/chart.hpp"
 #include "bench/bus_bench.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "processes/cli/commands.hpp"
 
 namespace chatsim::cli {
@@ -19,6 +20,7 @@ struct BusBenchArgs {
 };
 
 int run_bus_bench(BusBenchArgs a) {
+  if (!a.out.empty()) prepare_output_file(a.out);  // before any work
   if (a.quick) {
     a.config.small_count = 20000;
     a.config.image_count = 20;
@@ -95,6 +97,7 @@ struct BagBenchArgs {
 };
 
 int run_bag_bench(const BagBenchArgs& a) {
+  if (!a.out.empty()) prepare_output_file(a.out);  // before any work
   std::cerr << "bench bag: " << a.config.fps << " frames/s of " << a.config.width << "x" << a.config.height
             << " JPEG through the bus into the recorder for " << a.config.seconds << " s..." << std::endl;
   const auto r = bench::run_bag_bench(a.config);

@@ -10,6 +10,7 @@
 #include "common/bus/node.hpp"
 #include "common/bus/topics.hpp"
 #include "common/util/clock.hpp"
+#include "common/util/output_dir.hpp"
 #include "common/util/progress.hpp"
 #include "processes/agent_process.hpp"
 
@@ -60,13 +61,18 @@ void ChatSession::show(const std::string& stage, double fraction, const std::str
   bar_->update(fraction, message);
 }
 
+fs::path prepare_rounds_root(const std::string& root, const std::string& scene, bool force, const std::string& option) {
+  refuse_output_over_input(root, scene, option, "--scene");
+  return prepare_output_root(root, "results", force, option);
+}
+
 ChatSession::Outcome ChatSession::round(const std::string& command, const std::string& out, double timeout_s,
-                                        const std::string& preset) {
+                                        const std::string& preset, bool force_output) {
   Outcome result;
   flatbuffers::FlatBufferBuilder fbb(1024);
   const std::string out_abs = out.empty() ? "" : fs::absolute(out).lexically_normal().string();
   const auto req = msgs::CreateChatRequestDirect(fbb, conversation_.c_str(), scene_.c_str(), command.c_str(), !out.empty(),
-                                                 out_abs.c_str(), preset.c_str());
+                                                 out_abs.c_str(), preset.c_str(), force_output);
   const auto sent_to = liveness_.snapshot("manager", mono_s());
   show("decisions", 0, "the agents decide");
   in_round_ = true;

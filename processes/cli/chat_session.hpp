@@ -1,6 +1,7 @@
 #pragma once
 // One conversation with the manager over the bus (started privately when no bus runs): rounds
 // in, results out, with the progress the agents publish shown as it arrives.
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -22,6 +23,15 @@ namespace chatsim::cli {
 // Every agent process a rendered round needs.
 extern const std::vector<std::string> kAllAgents;
 
+// The folder a conversation's rendered rounds go into (round-N below it), made before any
+// process starts: new, empty, or one chatsim made for results (common/util/output_dir.hpp), and
+// neither the scene nor a folder holding it. Throws OutputDirError. `option` names it in messages.
+std::filesystem::path prepare_rounds_root(const std::string& root, const std::string& scene, bool force,
+                                          const std::string& option = "--out-root");
+inline constexpr const char* kRoundsRootHelp =
+    "folder for the rounds' results (round-N in it): new, empty, or one chatsim made for results; any other folder is "
+    "refused";
+
 class ChatSession {
  public:
   // stage, fraction 0..1, message; default: progress bars on stderr.
@@ -35,9 +45,11 @@ class ChatSession {
     nlohmann::json edit_state;
     std::string output_dir;       // empty when not rendered
   };
-  // One round; renders into out when it is not empty, with a rendering preset (draft, fast or
+  // One round; renders into out when it is not empty (a new or empty folder, or a result chatsim
+  // wrote; with force_output, any output chatsim wrote), with a rendering preset (draft, fast or
   // quality; empty: fast).
-  Outcome round(const std::string& command, const std::string& out, double timeout_s, const std::string& preset = "");
+  Outcome round(const std::string& command, const std::string& out, double timeout_s, const std::string& preset = "",
+                bool force_output = false);
   bool lost() const { return lost_; }
   const std::string& conversation() const { return conversation_; }
 

@@ -1,7 +1,7 @@
 #pragma once
 // How a command ends on an exception: no bus is exit 3; input the user can fix (a scene, a
-// nuScenes import or a recording that does not load, an invalid argument) is a usage error;
-// anything else a failure. The message goes to stderr.
+// nuScenes import or a recording that does not load, an output path it may not write, an
+// invalid argument) is a usage error; anything else a failure. The message goes to stderr.
 #include <functional>
 #include <iostream>
 #include <stdexcept>
@@ -13,6 +13,7 @@
 #include "common/import/nuscenes_import.hpp"
 #include "common/scene/scene.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 
 namespace chatsim::cli {
 
@@ -20,7 +21,8 @@ namespace chatsim::cli {
 inline int exit_code_for(const std::exception& e) {
   if (dynamic_cast<const bus::BusError*>(&e) != nullptr) return exit_code::kBusUnavailable;
   const bool users_input = dynamic_cast<const scene::SceneError*>(&e) != nullptr || dynamic_cast<const import::ImportError*>(&e) != nullptr ||
-                           dynamic_cast<const bag::McapError*>(&e) != nullptr || dynamic_cast<const std::invalid_argument*>(&e) != nullptr;
+                           dynamic_cast<const bag::McapError*>(&e) != nullptr || dynamic_cast<const std::invalid_argument*>(&e) != nullptr ||
+                           dynamic_cast<const OutputDirError*>(&e) != nullptr;
   return users_input ? exit_code::kUsage : exit_code::kFailure;
 }
 

@@ -5,6 +5,11 @@
 
 namespace chatsim::cli {
 
+// The --force flag of every command that writes an output folder (common/util/output_dir.hpp).
+inline constexpr const char* kForceHelp =
+    "replace an output folder chatsim wrote of another kind, or one an earlier chatsim wrote without its marker; never "
+    "a folder chatsim did not write";
+
 // Each adds a sub-command; `result` receives the exit code when it runs.
 void add_launch_command(CLI::App& app, int& result);
 void add_bench_command(CLI::App& app, int& result);

@@ -20,6 +20,7 @@
 #include "agents/render/render_pipeline.hpp"
 #include "common/scene/scene.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "processes/cli/chat_session.hpp"
 #include "processes/cli/commands.hpp"
 #include "common/util/preset_names.hpp"
@@ -55,7 +56,11 @@ int run_e2e(const E2eArgs& a) {
     return exit_code::kUsage;
   }
   const bool has_plates = fs::exists(s.dir / "ground_truth" / "clean_plates.json");
-  const fs::path work = a.work.empty() ? fs::temp_directory_path() / ("chatsim-bench-e2e-" + std::to_string(::getpid())) : fs::path(a.work);
+  // Where the results go, checked before any work.
+  prepare_output_file(a.out);
+  const fs::path work = prepare_rounds_root(
+      a.work.empty() ? (fs::temp_directory_path() / ("chatsim-bench-e2e-" + std::to_string(::getpid()))).string() : a.work,
+      scene_dir, false, "--work");
   const fs::path renders = agents::render::cache_root() / "renders" / agents::render::scene_key(s);
   json runs = json::array(), presets = json::array();
   std::vector<bench::StackedBar> bars;
@@ -125,6 +130,7 @@ int run_e2e(const E2eArgs& a) {
     }
   } catch (const std::exception& e) {
     std::cerr << "bench e2e: " << e.what() << "\n";
+    if (a.work.empty()) fs::remove_all(work);
     return exit_code::kFailure;
   }
   if (a.work.empty()) fs::remove_all(work);
@@ -168,7 +174,8 @@ void add_e2e_bench_command(CLI::App& bench, int& result) {
   e2e->add_option("--presets", a->presets, "rendering presets, the first one the baseline")
       ->delimiter(',')
       ->check(CLI::IsMember(preset_names()));
-  e2e->add_option("--work", a->work, "keep the results in this folder (default: a temporary one, removed after)");
+  e2e->add_option("--work", a->work, "keep the results in this folder: new, empty, or one chatsim made for results "
+                                    "(default: a temporary one, removed after)");
   e2e->add_option("--timeout-s", a->timeout_s, "how long to wait for each round")->check(CLI::PositiveNumber);
   e2e->callback([a, &result] { result = run_e2e(*a); });
 }

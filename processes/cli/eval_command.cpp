@@ -13,6 +13,7 @@
 #include "bench/command_grader.hpp"
 #include "common/scene/scene.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "processes/cli/commands.hpp"
 
 namespace chatsim::cli {
@@ -59,6 +60,9 @@ std::vector<Case> load_cases(const std::string& file) {
 
 int run_eval(const EvalArgs& a) {
   try {
+    // Where the results go, checked before any work.
+    if (!a.out.empty()) prepare_output_file(a.out);
+    if (!a.chart.empty()) prepare_output_file(a.chart, "--chart");
     const auto cases = load_cases(a.cases);
     const auto scene = scene::load_scene(a.scene);
     std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend(a.backend);
@@ -145,10 +149,7 @@ int run_eval(const EvalArgs& a) {
                                          "mean decision latency per round [ms]", "accuracy", true},
                                points);
     }
-    if (!a.out.empty()) {
-      std::filesystem::create_directories(std::filesystem::absolute(a.out).parent_path());
-      std::ofstream(a.out) << report.dump(1) << "\n";
-    }
+    if (!a.out.empty()) std::ofstream(a.out) << report.dump(1) << "\n";
     return exit_code::kOk;
   } catch (const scene::SceneError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -3,10 +3,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "render/light/light_estimate.hpp"
@@ -24,6 +26,7 @@ struct EstimateArgs {
 
 int run_estimate(const EstimateArgs& a) {
   return exit_code_of([&] {
+    prepare_output_file(a.out);  // before any work
     const auto s = scene::load_scene(a.scene);
     if (a.clip > 0) {
       // As the agents do: one estimate from frames spread over the clip.
@@ -55,6 +58,7 @@ struct EvalLightArgs {
   std::vector<std::string> hdri;
   int headings = 8, width = render::light::kDefaultCropWidth, every = 5;
   std::string out, save_views, scene;
+  bool force = false;
 };
 
 int run_eval_light(const EvalLightArgs& a) {
@@ -63,8 +67,13 @@ int run_eval_light(const EvalLightArgs& a) {
     return exit_code::kUsage;
   }
   nlohmann::json report;
+  std::optional<StagedOutputDir> views;
   try {
-    report = render::light::evaluate_panoramas(a.hdri, a.headings, a.width, a.save_views, [](const std::string& line) { std::cerr << line << "\n"; });
+    if (!a.out.empty()) prepare_output_file(a.out);  // before any work
+    if (!a.save_views.empty()) views.emplace(a.save_views, "images", a.force, "--save-views");
+    report = render::light::evaluate_panoramas(a.hdri, a.headings, a.width, views ? views->path().string() : "",
+                                               [](const std::string& line) { std::cerr << line << "\n"; });
+    if (views) views->commit();
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return exit_code::kUsage;
@@ -79,10 +88,7 @@ int run_eval_light(const EvalLightArgs& a) {
     });
     if (rc != exit_code::kOk) return rc;
   }
-  if (!a.out.empty()) {
-    if (fs::path(a.out).has_parent_path()) fs::create_directories(fs::path(a.out).parent_path());
-    std::ofstream(a.out) << report.dump(1) << "\n";
-  }
+  if (!a.out.empty()) std::ofstream(a.out) << report.dump(1) << "\n";
   std::cout << report.dump(1) << "\n";
   return exit_code::kOk;
 }
@@ -101,7 +107,7 @@ void add_light_command(CLI::App& app, int& result) {
                   "estimate from this many frames spread over the clip instead of one --frame (as the agents do: 4)")
       ->check(CLI::Range(1, 64))
       ->excludes(est->get_option("--frame"));
-  est->add_option("--out", ea->out, "sky dome EXR to write");
+  est->add_option("--out", ea->out, "sky dome EXR to write (replaced)")->capture_default_str();
   est->callback([ea, &result] { result = run_estimate(*ea); });
 }
 
@@ -116,8 +122,10 @@ void add_eval_light_command(CLI::App& eval, int& result) {
   cmd->add_option("--every", a->every, "with --scene: every N-th frame")->check(CLI::Range(1, 10000));
   cmd->add_option("--headings", a->headings, "headings per panorama")->check(CLI::Range(1, 64));
   cmd->add_option("--width", a->width, "crop width in pixels")->check(CLI::Range(64, 4096));
-  cmd->add_option("--out", a->out, "also write the JSON report here");
-  cmd->add_option("--save-views", a->save_views, "write the LDR crops the estimator saw to this directory");
+  cmd->add_option("--out", a->out, "also write the JSON report here (replaced)");
+  cmd->add_option("--save-views", a->save_views, "write the LDR crops the estimator saw to this folder (new, empty, or "
+                                                 "images chatsim wrote)");
+  cmd->add_flag("--force", a->force, kForceHelp);
   cmd->callback([a, &result] { result = run_eval_light(*a); });
 }
 

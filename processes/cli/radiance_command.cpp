@@ -2,11 +2,13 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "common/util/progress.hpp"
 #include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
@@ -34,6 +36,12 @@ int run_train(const TrainArgs& a) {
   try {
     s = scene::load_scene(a.scene);
   } catch (const scene::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_code::kUsage;
+  }
+  try {
+    prepare_output_file(a.out);  // before training, not after
+  } catch (const OutputDirError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return exit_code::kUsage;
   }
@@ -79,10 +87,12 @@ struct RenderArgs {
   std::vector<int> frames;
   std::vector<std::string> cameras;
   int max_width = 0;
+  bool force = false;
 };
 
 int run_render(const RenderArgs& a) {
   return exit_code_of([&] {
+    StagedOutputDir out(a.out, "renders", a.force);  // whole or not at all, refused before any work
     const auto s = scene::load_scene(a.scene);
     const auto model = render::gs::RadianceField::load(a.model);
     Eigen::Vector3d offset;
@@ -116,14 +126,15 @@ int run_render(const RenderArgs& a) {
         char name[64];
         std::snprintf(name, sizeof name, "%s/%06d", cam.name.c_str(), f.index);
         const float exposure = float(model.exposure(s, f.index, cam.name));
-        render::write_rgb8(fs::path(a.out) / (std::string(name) + ".png"), render::encode_srgb8(img.radiance, exposure));
-        render::write_exr(fs::path(a.out) / (std::string(name) + "_depth.exr"), img.depth);
-        render::write_exr(fs::path(a.out) / (std::string(name) + "_radiance.exr"), img.radiance);
+        render::write_rgb8(out.path() / (std::string(name) + ".png"), render::encode_srgb8(img.radiance, exposure));
+        render::write_exr(out.path() / (std::string(name) + "_depth.exr"), img.depth);
+        render::write_exr(out.path() / (std::string(name) + "_radiance.exr"), img.radiance);
         bar.update(double(++done) / total, std::string(name));
       }
     }
     bar.finish();
-    std::cout << "rendered " << done << " images into " << a.out << " (" << std::fixed << std::setprecision(3)
+    out.commit();
+    std::cout << "rendered " << done << " images into " << out.target().string() << " (" << std::fixed << std::setprecision(3)
               << (done ? seconds / done : 0) << " s per image)\n";
     return exit_code::kOk;
   });
@@ -132,19 +143,22 @@ int run_render(const RenderArgs& a) {
 struct NvsArgs {
   std::string scene, model, save;
   int holdout = 8, max_width = 0;
-  bool no_truth = false;
+  bool no_truth = false, force = false;
 };
 
 int run_eval_nvs(const NvsArgs& a) {
   return exit_code_of([&] {
+    std::optional<StagedOutputDir> save;
+    if (!a.save.empty()) save.emplace(a.save, "renders", a.force, "--save");
     const auto s = scene::load_scene(a.scene);
     const auto model = render::gs::RadianceField::load(a.model);
     render::gs::NvsOptions o;
     o.holdout = a.holdout;
     o.max_width = a.max_width;
     o.ground_truth = !a.no_truth;
-    o.save_dir = a.save;
+    o.save_dir = save ? save->path().string() : "";
     const auto r = render::gs::evaluate_nvs(model, s, o);
+    if (save) save->commit();
     std::cout << r.dump(1) << "\n";
     return exit_code::kOk;
   });
@@ -162,7 +176,8 @@ void add_eval_nvs_command(CLI::App& eval, int& result) {
   nvs->add_option("--holdout", a->holdout, "the holdout the model was trained with")->check(CLI::Range(0, 1000));
   nvs->add_option("--max-width", a->max_width, "evaluate at this width (default: the training width)");
   nvs->add_flag("--no-ground-truth", a->no_truth, "skip ground_truth/views.json");
-  nvs->add_option("--save", a->save, "write the renders into this folder");
+  nvs->add_option("--save", a->save, "write the renders into this folder (new, empty, or renders chatsim wrote)");
+  nvs->add_flag("--force", a->force, kForceHelp);
   nvs->callback([a, &result] { result = run_eval_nvs(*a); });
 }
 
@@ -171,7 +186,7 @@ void add_radiance_commands(CLI::App& app, int& result) {
   auto* train = app.add_subcommand("train", "Train the scene's radiance field (3D Gaussians on the CPU) from its images; "
                                             "prints a JSON report");
   train->add_option("--scene", ta->scene, "scene directory")->required();
-  train->add_option("--out", ta->out, "model file to write")->required();
+  train->add_option("--out", ta->out, "model file to write (replaced)")->required();
   train->add_option("--preset", ta->preset, "draft (a quick look), fast (up to 1800 iterations: about 8 min on 2 cores for the demo scene) or quality")->check(CLI::IsMember(preset_names()));
   train->add_option("--holdout", ta->holdout, "hold out frames with index % N == N/2 for evaluation (0: none)")->check(CLI::Range(0, 1000));
   train->add_option("--iterations", ta->iterations, "at most this many iterations (default: the preset's)")->check(CLI::Range(1, 1000000));
@@ -194,7 +209,9 @@ void add_radiance_commands(CLI::App& app, int& result) {
                                               "(at the image's exposure), radiance and depth EXR");
   render->add_option("--model", ra->model, "model file from chatsim train")->required();
   render->add_option("--scene", ra->scene, "scene directory")->required();
-  render->add_option("--out", ra->out, "output folder")->required();
+  render->add_option("--out", ra->out, "output folder: new, empty, or renders chatsim wrote (replaced when the new ones are "
+                                       "complete); any other folder is refused")->required();
+  render->add_flag("--force", ra->force, kForceHelp);
   render->add_option("--view-offset", ra->view_offset, "dx,dy,dz: move the ego (metres: ahead, left, up)");
   render->add_option("--yaw", ra->yaw_deg, "turn the ego (degrees, left positive)");
   render->add_option("--frames", ra->frames, "frame indices (default: all)");

@@ -15,6 +15,7 @@
 #include "bench/chart.hpp"
 #include "bench/foreground_bench.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "processes/cli/command_errors.hpp"
 #include "processes/cli/commands.hpp"
 #include "processes/cli/train_progress.hpp"
@@ -45,6 +46,7 @@ struct ForegroundArgs {
 };
 
 int run_foreground(const ForegroundArgs& a) {
+  prepare_output_file(a.out);  // before any work
   bench::ForegroundBenchConfig c;
   c.quick = a.quick;
   std::cerr << "bench foreground: one car over about a fifth of a 640x426 frame at several sample counts...\n";
@@ -68,10 +70,17 @@ struct LightArgs {
   std::vector<std::string> hdri;
   std::string out = "bench/results/light.json", save_views, scene;
   int headings = 8, width = render::light::kDefaultCropWidth, every = 5;
+  bool force = false;
 };
 
 int run_light(const LightArgs& a) {
-  json report = render::light::evaluate_panoramas(a.hdri, a.headings, a.width, a.save_views, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
+  // Where the results go, checked before any work.
+  prepare_output_file(a.out);
+  std::optional<StagedOutputDir> views;
+  if (!a.save_views.empty()) views.emplace(a.save_views, "images", a.force, "--save-views");
+  json report = render::light::evaluate_panoramas(a.hdri, a.headings, a.width, views ? views->path().string() : "",
+                                                  [](const std::string& line) { std::printf("%s\n", line.c_str()); });
+  if (views) views->commit();
   std::vector<bench::ChartPoint> pts;
   for (const auto& r : report["panoramas"]) pts.push_back({r["panorama"], r["median_seconds"], r["median_angular_error_deg"]});
   // All panoramas' headings in two groups: the sun inside a crop, or out of them.
@@ -110,9 +119,15 @@ int run_light(const LightArgs& a) {
 struct DeletionArgs {
   std::string scene, out = "bench/results/deletion.json", save, pair_scene, pair_model, model;
   int max_objects = 6;
+  bool force = false;
 };
 
 int run_deletion(const DeletionArgs& a) {
+  // Where the results go, checked before any work.
+  prepare_output_file(a.out);
+  std::optional<StagedOutputDir> staged;
+  if (!a.save.empty()) staged.emplace(a.save, "images", a.force, "--save");
+  const std::string save = staged ? staged->path().string() : "";
   const auto s = scene::load_scene(a.scene);
   // The pair scene is loaded first: a bad one fails now, not after the demo's measurements.
   std::optional<scene::Scene> ps;
@@ -120,18 +135,19 @@ int run_deletion(const DeletionArgs& a) {
   render::inpaint::DeletionEvalOptions o;
   o.progress = [](const std::string& line) { std::cerr << "deletion: " << line << std::endl; };
   o.max_objects = a.max_objects;
-  o.save_dir = a.save;
+  o.save_dir = save;
   json r = render::inpaint::evaluate_deletion(s, o);
   if (!a.model.empty()) {
     // What the deletion agent does: the radiance field fills what the ground map cannot.
     const auto model = std::make_shared<render::gs::RadianceField>(render::gs::RadianceField::load(a.model));
     o.background = render::inpaint::field_renderer(model, s);
-    o.save_dir = a.save.empty() ? "" : a.save + "/with-field";
+    o.save_dir = save.empty() ? "" : save + "/with-field";
     o.baseline = false;  // measured once above, on the same masks
     r["with_field"] = render::inpaint::evaluate_deletion(s, o)["summary"];
     // And in the views the field renders (a moved view), against the shifted truth views.
-    r["moved_views"] = render::inpaint::evaluate_moved_view_deletion(s, model, a.save.empty() ? "" : a.save + "/moved-views")["summary"];
+    r["moved_views"] = render::inpaint::evaluate_moved_view_deletion(s, model, save.empty() ? "" : save + "/moved-views")["summary"];
   }
+  if (staged) staged->commit();
   if (ps) {
     // A real capture has no clean plates: a before / after pair beside the report instead.
     fs::path prefix(a.out);
@@ -235,6 +251,7 @@ int run_nvs(const NvsArgs& a) {
   }
   const auto s = scene::load_scene(a.scene);
   const std::string out = a.out.empty() ? "bench/results/nvs-" + s.name + ".json" : a.out;
+  prepare_output_file(out);  // before the first training
   json runs = json::array(), ceiling;
   for (size_t k = 0; k < a.configs.size(); ++k) {
     const std::string& name = a.configs[k];
@@ -279,7 +296,7 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
                                           "training and render time (long: minutes per configuration)");
   nvs->add_option("--scene", na->scene, "scene directory");
   nvs->add_option("--redraw", na->redraw, "only draw the charts again from this report (no training)")->check(CLI::ExistingFile);
-  nvs->add_option("--out", na->out, "JSON report (default bench/results/nvs-<scene>.json; PNG charts beside it)");
+  nvs->add_option("--out", na->out, "JSON report (replaced; default bench/results/nvs-<scene>.json; PNG charts beside it)");
   nvs->add_option("--configs", na->configs, "configurations: <preset>[-<iterations>][-no-exposure][-no-pose-refinement][-dssim][-coarse] (-dssim: 0.2 D-SSIM in the loss; -coarse: " +
                       std::to_string(std::lround(100 * render::gs::kCoarseConfigShare)) + " % of the iterations at half resolution)");
   nvs->add_option("--holdout", na->holdout, "hold out frames with index % N == N/2");
@@ -287,26 +304,30 @@ void add_render_bench_commands(CLI::App& bench, int& result) {
   nvs->callback([na, &result] { result = run_nvs(*na); });
   auto fa = std::make_shared<ForegroundArgs>();
   auto* fg = bench.add_subcommand("foreground", "Path tracing a car: noise against time per frame at several sample counts");
-  fg->add_option("--out", fa->out, "JSON report (a PNG chart beside it)");
+  fg->add_option("--out", fa->out, "JSON report (replaced; a PNG chart beside it)")->capture_default_str();
   fg->add_flag("--quick", fa->quick, "a 256-sample reference instead of 1024");
   fg->callback([fa, &result] { result = run_foreground(*fa); });
   auto la = std::make_shared<LightArgs>();
   auto* light = bench.add_subcommand("light", "Lighting estimation on HDR panoramas (e.g. blender-data's outdoor EXRs), "
                                               "against a fixed-guess baseline");
   light->add_option("--hdri", la->hdri, "panoramas")->required()->check(CLI::ExistingFile);
-  light->add_option("--out", la->out, "JSON report (a PNG chart beside it)");
   light->add_option("--headings", la->headings, "headings per panorama");
   light->add_option("--width", la->width, "crop width");
-  light->add_option("--save-views", la->save_views, "write the LDR crops the estimator saw to this directory");
+  light->add_option("--out", la->out, "JSON report (replaced; a PNG chart beside it)")->capture_default_str();
+  light->add_option("--save-views", la->save_views, "write the LDR crops the estimator saw to this folder (new, empty, or "
+                                                    "images chatsim wrote)");
+  light->add_flag("--force", la->force, kForceHelp);
   light->add_option("--scene", la->scene, "also a demo scene, against its ground-truth sky (ground_truth/sky.json)");
   light->add_option("--every", la->every, "with --scene: every N-th frame")->check(CLI::Range(1, 10000));
   light->callback([la, &result] { result = exit_code_of([&] { return run_light(*la); }); });
   auto da = std::make_shared<DeletionArgs>();
   auto* del = bench.add_subcommand("deletion", "Deletion against the demo scene's clean plates, against cv::inpaint Telea");
   del->add_option("--scene", da->scene, "a rendered demo scene")->required();
-  del->add_option("--out", da->out, "JSON report (a PNG chart beside it)");
+  del->add_option("--out", da->out, "JSON report (replaced; a PNG chart beside it)")->capture_default_str();
   del->add_option("--max-objects", da->max_objects, "vehicles to remove (largest plates first)");
-  del->add_option("--save", da->save, "before / after / baseline / plate images here");
+  del->add_option("--save", da->save, "before / after / baseline / plate images into this folder (new, empty, or images "
+                                      "chatsim wrote)");
+  del->add_flag("--force", da->force, kForceHelp);
   del->add_option("--model", da->model,
                   "a radiance field of the scene (chatsim train, or the one chatsim run cached): also measure the fill the "
                   "deletion agent makes, with the field behind the vehicle")

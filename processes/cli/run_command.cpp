@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -23,6 +24,8 @@
 #include "processes/cli/commands.hpp"
 #include "processes/cli/chat_session.hpp"
 #include "processes/cli/process_graph.hpp"
+#include "agents/manager/manager.hpp"
+#include "common/util/output_dir.hpp"
 #include "common/util/preset_names.hpp"
 
 namespace chatsim::cli {
@@ -33,6 +36,7 @@ struct RunArgs {
   std::string scene, out = "output/run", bus, conversation, preset = "fast";
   std::vector<std::string> rounds;
   double timeout_s = 6 * 3600;
+  bool force = false;
 };
 
 bool check_scene(const std::string& dir) {
@@ -50,16 +54,28 @@ bool check_scene(const std::string& dir) {
   }
 }
 
+// Output folders are checked before any process starts or any work is done.
+bool check_output(const std::function<void()>& check) {
+  try {
+    check();
+    return true;
+  } catch (const OutputDirError& e) {
+    spdlog::error("{}", e.what());
+    return false;
+  }
+}
+
 int run_run(const RunArgs& a) {
   init_logging("run");
   const std::string scene_dir = fs::absolute(a.scene).lexically_normal().string();
   if (!check_scene(scene_dir)) return exit_code::kUsage;
+  if (!check_output([&] { agents::manager::check_render_output(a.out, scene_dir, a.force); })) return exit_code::kUsage;
   return exit_code_of([&] {
     ChatSession session(a.bus, scene_dir, a.conversation);
     // Every round but the last only decides; the last is rendered.
     for (size_t i = 0; i < a.rounds.size(); ++i) {
       const bool last = i + 1 == a.rounds.size();
-      const auto r = session.round(a.rounds[i], last ? a.out : "", a.timeout_s, a.preset);
+      const auto r = session.round(a.rounds[i], last ? a.out : "", a.timeout_s, a.preset, a.force);
       if (!r.ok) {
         spdlog::error("round {}: {}", i + 1, r.message);
         return session.lost() ? exit_code::kBusUnavailable : exit_code::kFailure;
@@ -74,13 +90,14 @@ int run_run(const RunArgs& a) {
 struct ChatArgs {
   std::string scene, out_root = "output/chat", bus, preset = "fast";
   double timeout_s = 6 * 3600;
-  bool no_render = false;
+  bool no_render = false, force = false;
 };
 
 int run_chat(const ChatArgs& a) {
   init_logging("chat");
   const std::string scene_dir = fs::absolute(a.scene).lexically_normal().string();
   if (!check_scene(scene_dir)) return exit_code::kUsage;
+  if (!a.no_render && !check_output([&] { prepare_rounds_root(a.out_root, scene_dir, a.force); })) return exit_code::kUsage;
   return exit_code_of([&] {
     ChatSession session(a.bus, scene_dir, "");
     std::cerr << "chatsim chat: one command per line; each round's result goes to " << a.out_root
@@ -93,7 +110,7 @@ int run_chat(const ChatArgs& a) {
       if (line.find_first_not_of(" \t") == std::string::npos) continue;
       ++n;
       const std::string out = a.no_render ? "" : (fs::path(a.out_root) / ("round-" + std::to_string(n))).string();
-      const auto r = session.round(line, out, a.timeout_s, a.preset);
+      const auto r = session.round(line, out, a.timeout_s, a.preset, a.force);
       if (!r.ok) {
         spdlog::error("{}", r.message);
         if (session.lost()) return exit_code::kBusUnavailable;
@@ -120,7 +137,10 @@ void add_run_commands(CLI::App& app, int& result) {
                                         "is running, and stops them after.");
   run->add_option("--scene", ra->scene, "scene directory (with images)")->required();
   run->add_option("commands", ra->rounds, "the command(s), e.g. \"Remove all cars and add a red Porsche 20 m ahead\"")->required();
-  run->add_option("--out", ra->out, "result folder (replaced; written whole or not at all)");
+  run->add_option("--out", ra->out, "result folder: new, empty, or a result chatsim wrote (replaced when the new one is "
+                                    "complete); any other folder is refused")
+      ->capture_default_str();
+  run->add_flag("--force", ra->force, kForceHelp);
   run->add_option("--bus", ra->bus, "use this running bus instead of starting processes");
   run->add_option("--conversation", ra->conversation, "conversation id (default: a fresh one)");
   run->add_option("--preset", ra->preset, kPresetHelp)->check(CLI::IsMember(preset_names()));
@@ -131,7 +151,8 @@ void add_run_commands(CLI::App& app, int& result) {
   auto* chat = app.add_subcommand("chat", "A conversation on the terminal: each line is a round, rendered into "
                                           "--out-root/round-N (only what changed is rendered again)");
   chat->add_option("--scene", ca->scene, "scene directory (with images)")->required();
-  chat->add_option("--out-root", ca->out_root, "folder for the rounds' results");
+  chat->add_option("--out-root", ca->out_root, kRoundsRootHelp)->capture_default_str();
+  chat->add_flag("--force", ca->force, kForceHelp);
   chat->add_option("--bus", ca->bus, "use this running bus instead of starting processes");
   chat->add_option("--preset", ca->preset, kPresetHelp)->check(CLI::IsMember(preset_names()));
   chat->add_option("--timeout-s", ca->timeout_s, "how long to wait for each round")->check(CLI::PositiveNumber);

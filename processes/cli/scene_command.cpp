@@ -12,6 +12,7 @@
 #include "common/scene/scene.hpp"
 #include "common/scene/scene_summary.hpp"
 #include "common/util/exit_codes.hpp"
+#include "common/util/output_dir.hpp"
 #include "common/util/progress.hpp"
 #include "render/demo/demo_generate.hpp"
 #include "processes/cli/command_errors.hpp"
@@ -49,6 +50,7 @@ struct DemoArgs {
   double calibration_error_deg = 0.3;
   double trigger_offset_scale = 1.0;
   bool no_plates = false, no_lidar = false, no_views = false;
+  bool force = false;
 };
 
 int run_demo_render(const DemoArgs& a) {
@@ -64,6 +66,7 @@ int run_demo_render(const DemoArgs& a) {
   o.calibration_error_deg = a.calibration_error_deg;
   for (auto& t : o.trigger_offset_ms) t *= a.trigger_offset_scale;
   o.trigger_jitter_ms *= a.trigger_offset_scale;
+  o.force_output = a.force;
   o.clean_plates = !a.no_plates;
   o.lidar = !a.no_lidar;
   o.truth_views = !a.no_views;
@@ -77,36 +80,38 @@ int run_demo_render(const DemoArgs& a) {
               << r.views << " ground-truth views, " << r.lidar_frames << " LiDAR sweeps in " << std::fixed
               << std::setprecision(1) << r.seconds << " s (seed " << a.seed << ")\n";
     return exit_code::kOk;
-  } catch (const std::exception& e) {
+  } catch (const std::exception&) {
     bar.finish();
-    std::cerr << "error: " << e.what() << "\n";
-    return exit_code::kFailure;
+    throw;
   }
 }
 
-int run_demo(const DemoArgs& a) {
-  if (!a.layout_only) return run_demo_render(a);
+int write_demo_layout(const DemoArgs& a) {
   scene::DemoOptions o;
   o.seed = a.seed;
   if (a.frames > 0) o.frames = a.frames;
   const auto s = scene::demo_layout(o);
-  // Written beside the target and renamed when complete, so an interrupted run leaves nothing half-written.
-  const std::filesystem::path out = std::filesystem::absolute(a.out).lexically_normal();
-  const std::filesystem::path tmp = out.string() + ".tmp";
-  std::filesystem::remove_all(tmp);
-  scene::save_scene(s, tmp);
-  std::filesystem::remove_all(out);
-  std::filesystem::rename(tmp, out);
-  std::cout << "wrote " << out.string() << ": " << s.frames.size() << " frames, " << s.objects.size() << " objects, "
+  // Written beside the target and swapped in when complete, so an interrupted run leaves nothing half-written.
+  StagedOutputDir out(a.out, "scene", a.force);
+  scene::save_scene(s, out.path());
+  out.commit();
+  std::cout << "wrote " << out.target().string() << ": " << s.frames.size() << " frames, " << s.objects.size() << " objects, "
             << s.lanes.lanes().size() << " lanes (seed " << a.seed << ")\n";
   return exit_code::kOk;
+}
+
+int run_demo(const DemoArgs& a) {
+  return exit_code_of([&] {
+    check_output_dir(a.out, "scene", a.force);  // before any work
+    return a.layout_only ? write_demo_layout(a) : run_demo_render(a);
+  });
 }
 
 struct ImportArgs {
   import::NuScenesOptions options;
   std::string cameras;
   std::string out;
-  bool no_lidar = false, no_level = false;
+  bool no_lidar = false, no_level = false, force = false;
 };
 
 int run_import(ImportArgs a) {
@@ -120,6 +125,7 @@ int run_import(ImportArgs a) {
   }
   a.options.lidar = !a.no_lidar;
   a.options.level_frames = !a.no_level;
+  a.options.force_output = a.force;
   return exit_code_of([&] {
     std::map<int, import::FrameLevel> levels;
     const auto s = import::import_nuscenes(
@@ -131,7 +137,7 @@ int run_import(ImportArgs a) {
         &levels);
     int colored = 0;
     for (const auto& o : s.objects) colored += o.color_rgb ? 1 : 0;
-    std::cout << "wrote " << a.out << ": " << s.frames.size() << " frames, " << s.cameras.size() << " cameras, "
+    std::cout << "wrote " << s.dir.string() << ": " << s.frames.size() << " frames, " << s.cameras.size() << " cameras, "
               << s.objects.size() << " objects (" << colored << " with an estimated colour), lanes derived from the ego path\n";
     if (!levels.empty()) {
       double lo = 0, hi = 0, tilt = 0;
@@ -145,6 +151,10 @@ int run_import(ImportArgs a) {
     return exit_code::kOk;
   });
 }
+
+const char* const kSceneOutHelp =
+    "output scene folder: new, empty, or a scene chatsim wrote (replaced when the new one is complete); any other "
+    "folder is refused";
 
 }  // namespace
 
@@ -161,7 +171,8 @@ void add_scene_command(CLI::App& app, int& result) {
   auto* demo = scene->add_subcommand("demo", "Generate the procedural demo street (seeded), path traced as a "
                                              "three-camera car records it, with ground truth (held-out and shifted "
                                              "views, clean plates, depth, sky); or only its layout");
-  demo->add_option("--out", demo_args->out, "output scene directory (replaced)")->required();
+  demo->add_option("--out", demo_args->out, kSceneOutHelp)->required();
+  demo->add_flag("--force", demo_args->force, kForceHelp);
   demo->add_option("--seed", demo_args->seed, "random seed (same seed, same scene)");
   demo->add_option("--frames", demo_args->frames, "number of frames at 10 Hz (default: the preset's)")->check(CLI::Range(2, 10000));
   demo->add_flag("--layout-only", demo_args->layout_only, "write the layout only (no images): enough for every decision");
@@ -193,7 +204,8 @@ void add_scene_command(CLI::App& app, int& result) {
   nus->add_option("--version", import_args->options.version, "table folder, e.g. v1.0-mini");
   nus->add_option("--scene", import_args->options.scene, "scene name, e.g. scene-0916")->required();
   nus->add_option("--cameras", import_args->cameras, "comma-separated channels (default CAM_FRONT,CAM_FRONT_LEFT,CAM_FRONT_RIGHT)");
-  nus->add_option("--out", import_args->out, "output scene directory (replaced)")->required();
+  nus->add_option("--out", import_args->out, kSceneOutHelp)->required();
+  nus->add_flag("--force", import_args->force, kForceHelp);
   nus->add_flag("--no-lidar", import_args->no_lidar, "skip the LiDAR point clouds");
   nus->add_flag("--no-level", import_args->no_level,
                 "keep nuScenes' ego poses as they are (all at height 0) instead of levelling each frame by its static boxes");

@@ -14,6 +14,7 @@
 #include "common/scene/scene.hpp"
 #include "common/util/exit_codes.hpp"
 #include "common/util/log.hpp"
+#include "common/util/output_dir.hpp"
 #include "common/util/signals.hpp"
 #include "processes/cli/chat_page.hpp"
 #include "processes/cli/chat_session.hpp"
@@ -31,6 +32,7 @@ struct ServeArgs {
   std::string scene, out_root = "output/serve", bus, host = "127.0.0.1", port_file;
   int port = 8080;
   double timeout_s = 6 * 3600;
+  bool force = false;
 };
 
 class ChatServer {
@@ -58,7 +60,7 @@ class ChatServer {
         }
         const int n = int(rounds_.size()) + 1;
         const fs::path out = fs::absolute(fs::path(a_.out_root) / ("round-" + std::to_string(n)));
-        const auto r = session.round(command, out.string(), a_.timeout_s);
+        const auto r = session.round(command, out.string(), a_.timeout_s, "", a_.force);
         json round{{"command", command}, {"ok", r.ok}, {"message", r.message}};
         if (r.ok && !r.output_dir.empty()) {
           round["result"] = "/results/round-" + std::to_string(n);
@@ -167,6 +169,12 @@ int run_serve(const ServeArgs& a) {
     spdlog::error("{}", e.what());
     return exit_code::kUsage;
   }
+  try {
+    prepare_rounds_root(a.out_root, scene, a.force);  // before any process starts
+  } catch (const OutputDirError& e) {
+    spdlog::error("{}", e.what());
+    return exit_code::kUsage;
+  }
   const auto& stop = install_stop_signals();
   ChatServer chat(a, scene);
   std::thread worker([&] { chat.worker(stop); });
@@ -197,7 +205,8 @@ void add_serve_command(CLI::App& app, int& result) {
   cmd->add_option("--port", a->port, "port on 127.0.0.1 (0: any free one)")->check(CLI::Range(0, 65535));
   cmd->add_option("--host", a->host, "address to listen on");
   cmd->add_option("--port-file", a->port_file, "write the chosen port here");
-  cmd->add_option("--out-root", a->out_root, "folder for the rounds' results");
+  cmd->add_option("--out-root", a->out_root, kRoundsRootHelp)->capture_default_str();
+  cmd->add_flag("--force", a->force, kForceHelp);
   cmd->add_option("--bus", a->bus, "use this running bus instead of starting processes");
   cmd->callback([a, &result] { result = run_serve(*a); });
 }

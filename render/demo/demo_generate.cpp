@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/scene/camera_model.hpp"
+#include "common/util/output_dir.hpp"
 #include "render/equirect.hpp"
 #include "render/image_io.hpp"
 #include "render/sampling.hpp"
@@ -155,9 +156,8 @@ DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_d
   scene::Scene layout = scene::demo_layout(o.layout);
   const std::vector<scene::Camera> rig_true = layout.cameras;
   DemoWorld world(layout, o.world);
-  const fs::path out = fs::absolute(out_dir).lexically_normal();
-  const fs::path tmp = out.string() + ".tmp";
-  fs::remove_all(tmp);
+  StagedOutputDir staged(out_dir, "scene", o.force_output);  // refused before any rendering
+  const fs::path& tmp = staged.path();
   fs::create_directories(tmp / "ground_truth");
 
   // Automatic exposure: the front camera's median radiance at frame 0 to a mid-grey.
@@ -365,8 +365,7 @@ DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_d
                             {"clean_plates", "clean_plates.json"},
                             {"sky", "sky.exr, sky.json"}}}});
   scene::save_scene(layout, tmp);
-  fs::remove_all(out);
-  fs::rename(tmp, out);
+  staged.commit();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if (o.progress) o.progress("done", 1.0);
   return report;

@@ -46,6 +46,7 @@ struct DemoRenderOptions {
   std::vector<int> shifted_frames{12, 28};
   std::vector<ViewShift> shifts{{"left_1m", {0, 1, 0}}, {"right_1m", {0, -1, 0}}, {"up_1m", {0, 0, 1}},
                                 {"ahead_3m", {3, 0, 0}}};
+  bool force_output = false;    // replace a chatsim output of another kind at `out` (--force)
   // Stage name and 0..1 of the whole job.
   std::function<void(const std::string&, double)> progress;
 };
@@ -59,7 +60,9 @@ struct DemoReport {
   double exposure_s = 0;        // the automatic exposure, before per-camera scales
 };
 
-// Renders into `out` (written as out + ".tmp" and renamed when complete).
+// Renders into `out`: new, empty or a scene chatsim wrote (common/util/output_dir.hpp), written
+// under a temporary name beside it and swapped in when complete. Throws OutputDirError for any
+// other folder, before rendering.
 DemoReport generate_demo_scene(const DemoRenderOptions& options, const std::filesystem::path& out);
 
 }  // namespace chatsim::render::demo

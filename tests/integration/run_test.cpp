@@ -14,6 +14,7 @@
 
 #include "common/bus/topics.hpp"
 #include "common/util/clock.hpp"
+#include "common/util/output_dir.hpp"
 #include "tests/support/bus_fixture.hpp"
 #include "tests/support/heartbeat_watcher.hpp"
 #include "tests/support/subprocess.hpp"
@@ -82,13 +83,16 @@ TEST_F(Run, RemovesAddsAndWritesEveryOutputThenReusesStages) {
   const auto first = nlohmann::json::parse(test_support::read_file(out / "result.json"));
   EXPECT_FALSE(first["reused"]["background"].get<bool>());
   EXPECT_FALSE(first["reused"]["light"].get<bool>());  // estimated once, ahead of the stages
-  // Again, one more round of the same edit: training and background come from the cache.
-  const fs::path out2 = *root_ / "result2";
+  EXPECT_EQ(output_kind(out), "result");
+  // Again, one more round of the same edit, into the same folder (chatsim's own: replaced):
+  // training and background come from the cache.
+  const fs::path out2 = out;
   const std::string cmd2 = env() + bin("chatsim") + " run --scene " + (*root_ / "scene").string() + " --out " + out2.string() +
                            " 'Remove the nearest car and add a red car 15 m ahead' 'Make it blue.' > " +
                            (*root_ / "run2.log").string() + " 2>&1";
   ASSERT_EQ(run_shell(cmd2, 300s), 0) << test_support::read_file(*root_ / "run2.log");
   const auto second = nlohmann::json::parse(test_support::read_file(out2 / "result.json"));
+  EXPECT_EQ(nlohmann::json::parse(test_support::read_file(out2 / "edit.json"))["rounds"].size(), 2u);  // the new result
   EXPECT_TRUE(second["reused"]["training"].get<bool>());
   EXPECT_TRUE(second["reused"]["light"].get<bool>());
   EXPECT_TRUE(second["reused"]["background"].get<bool>());

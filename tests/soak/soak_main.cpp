@@ -22,6 +22,7 @@
 #include "common/util/clock.hpp"
 #include "common/util/exit_codes.hpp"
 #include "common/util/log.hpp"
+#include "common/util/output_dir.hpp"
 #include "render/demo/demo_generate.hpp"
 #include "processes/cli/process_graph.hpp"
 
@@ -96,6 +97,12 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "JSON report (empty: do not write)");
   CLI11_PARSE(app, argc, argv);
   init_logging("soak");
+  try {
+    if (!out.empty()) prepare_output_file(out);  // before the long run, not after
+  } catch (const OutputDirError& e) {
+    std::cerr << "chatsim-soak: " << e.what() << "\n";
+    return exit_code::kUsage;
+  }
 
   const auto work = fs::temp_directory_path() / ("chatsim-soak-" + std::to_string(getpid()));
   const auto scene_dir = work / "layout";
@@ -203,9 +210,6 @@ int main(int argc, char** argv) {
                     {"worst_rss_growth", worst_growth},
                     {"passed", lost == 0 && outputs_missing == 0 && worst_growth < 0.10}};
   std::cout << report.dump(1) << std::endl;
-  if (!out.empty()) {
-    fs::create_directories(fs::absolute(out).parent_path());
-    std::ofstream(out) << report.dump(1) << "\n";
-  }
+  if (!out.empty()) std::ofstream(out) << report.dump(1) << "\n";
   return report["passed"].get<bool>() ? exit_code::kOk : exit_code::kFailure;
 }

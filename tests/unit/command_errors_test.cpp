@@ -16,6 +16,7 @@ TEST(CommandErrors, InputTheUserCanFixIsUsage) {
   EXPECT_EQ(exit_code_of([]() -> int { throw import::ImportError("no such scene"); }, quiet), exit_code::kUsage);
   EXPECT_EQ(exit_code_of([]() -> int { throw bag::McapError("truncated"); }, quiet), exit_code::kUsage);
   EXPECT_EQ(exit_code_of([]() -> int { throw std::invalid_argument("--width"); }, quiet), exit_code::kUsage);
+  EXPECT_EQ(exit_code_of([]() -> int { throw OutputDirError("--out /home: not empty"); }, quiet), exit_code::kUsage);
 }
 
 TEST(CommandErrors, AnythingElseIsFailureAndIsReported) {
