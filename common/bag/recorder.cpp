@@ -58,6 +58,9 @@ std::string base64(std::string_view in) {
   return out;
 }
 
+namespace {
+
+// A recording may go to `out` (see record() in the header).
 void check_recording_path(const fs::path& out, bool force) {
   const fs::path file = prepare_output_file(out, "--output");
   const fs::path part = file.string() + ".part";
@@ -75,6 +78,8 @@ void check_recording_path(const fs::path& out, bool force) {
     throw OutputDirError("--output " + file.string() + ": a recording is there already: choose another name, or pass "
                          "--force to replace it");
 }
+
+}  // namespace
 
 RecordReport record(const RecordOptions& o, const std::atomic<bool>& stop,
                     const std::function<void(const RecordReport&)>& progress) {

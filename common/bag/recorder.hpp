@@ -20,11 +20,6 @@ struct RecordOptions {
   std::atomic<bool>* ready = nullptr;  // set once subscribed (benchmarks wait for it)
 };
 
-// Checks, before recording, that `out` may be written: no folder, no file but (with force) an
-// earlier recording, and no interrupted recording (`out`.part) to overwrite. Throws
-// OutputDirError (common/util/output_dir.hpp) saying what is wrong and the fix.
-void check_recording_path(const std::filesystem::path& out, bool force);
-
 struct RecordReport {
   uint64_t messages = 0;      // written
   uint64_t bytes = 0;         // message bytes written
@@ -37,6 +32,8 @@ struct RecordReport {
 };
 
 // Records until stop is set or duration_s passes. progress(report) is called about once a second.
+// Before connecting, `out` is checked: no folder, no file but (with force) an earlier recording,
+// and no interrupted recording (`out`.part) to overwrite; OutputDirError otherwise.
 RecordReport record(const RecordOptions& options, const std::atomic<bool>& stop,
                     const std::function<void(const RecordReport&)>& progress = {});
 

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -194,7 +195,10 @@ std::optional<std::string> output_kind(const fs::path& dir) {
   return (*m)["kind"].get<std::string>();
 }
 
-fs::path check_output_dir(const fs::path& dir, const std::string& kind, bool force, const std::string& option) {
+namespace {
+
+// check_output_dir, also saying what the folder holds.
+std::pair<fs::path, Inspection> checked(const fs::path& dir, const std::string& kind, bool force, const std::string& option) {
   const fs::path p = resolve(dir, option);
   const Inspection in = inspect(p, kind);
   if (auto why = refusal(p, in, kind, force, option)) throw OutputDirError(*why);
@@ -203,7 +207,13 @@ fs::path check_output_dir(const fs::path& dir, const std::string& kind, bool for
   if (auto why = unwritable(p.parent_path())) throw OutputDirError(option + " " + quoted(p) + ": " + *why);
   if (in.holds != Holds::Nothing)
     if (auto why = unwritable(p)) throw OutputDirError(option + " " + quoted(p) + ": " + *why);
-  return p;
+  return {p, in};
+}
+
+}  // namespace
+
+fs::path check_output_dir(const fs::path& dir, const std::string& kind, bool force, const std::string& option) {
+  return checked(dir, kind, force, option).first;
 }
 
 void refuse_output_over_input(const fs::path& dir, const fs::path& input, const std::string& option,
@@ -249,8 +259,7 @@ void StagedOutputDir::commit() {
 }
 
 fs::path prepare_output_root(const fs::path& dir, const std::string& kind, bool force, const std::string& option) {
-  const fs::path p = check_output_dir(dir, kind, force, option);
-  const Inspection in = inspect(p, kind);
+  const auto [p, in] = checked(dir, kind, force, option);
   if (in.holds == Holds::OwnSameKind) return p;
   if (in.holds == Holds::Nothing || in.holds == Holds::EmptyFolder) {
     fs::create_directories(p);

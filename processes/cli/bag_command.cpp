@@ -40,7 +40,6 @@ int run_record(const BagArgs& a) {
   o.duration_s = a.duration_s;
   o.out = a.out.empty() ? "chatsim-" + std::to_string(std::time(nullptr)) + ".mcap" : a.out;
   o.force = a.force;
-  bag::check_recording_path(o.out, o.force);  // before connecting
   const auto& stop = install_stop_signals();
   std::cerr << "recording " << (a.all ? "every topic" : std::to_string(a.topics.size()) + " topic(s)") << " from " << o.bus
             << " to " << o.out.string() << " (Ctrl-C stops)\n";

@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -54,23 +53,12 @@ bool check_scene(const std::string& dir) {
   }
 }
 
-// Output folders are checked before any process starts or any work is done.
-bool check_output(const std::function<void()>& check) {
-  try {
-    check();
-    return true;
-  } catch (const OutputDirError& e) {
-    spdlog::error("{}", e.what());
-    return false;
-  }
-}
-
 int run_run(const RunArgs& a) {
   init_logging("run");
   const std::string scene_dir = fs::absolute(a.scene).lexically_normal().string();
   if (!check_scene(scene_dir)) return exit_code::kUsage;
-  if (!check_output([&] { agents::manager::check_render_output(a.out, scene_dir, a.force); })) return exit_code::kUsage;
   return exit_code_of([&] {
+    agents::manager::check_render_output(a.out, scene_dir, a.force);  // before any process starts (exit 2)
     ChatSession session(a.bus, scene_dir, a.conversation);
     // Every round but the last only decides; the last is rendered.
     for (size_t i = 0; i < a.rounds.size(); ++i) {
@@ -97,8 +85,8 @@ int run_chat(const ChatArgs& a) {
   init_logging("chat");
   const std::string scene_dir = fs::absolute(a.scene).lexically_normal().string();
   if (!check_scene(scene_dir)) return exit_code::kUsage;
-  if (!a.no_render && !check_output([&] { prepare_rounds_root(a.out_root, scene_dir, a.force); })) return exit_code::kUsage;
   return exit_code_of([&] {
+    if (!a.no_render) prepare_rounds_root(a.out_root, scene_dir, a.force);  // before any process starts (exit 2)
     ChatSession session(a.bus, scene_dir, "");
     std::cerr << "chatsim chat: one command per line; each round's result goes to " << a.out_root
               << "/round-N; 'quit' ends.\n";

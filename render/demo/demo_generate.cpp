@@ -151,13 +151,13 @@ void write_json(const fs::path& file, const json& j) {
 DemoReport generate_demo_scene(const DemoRenderOptions& o, const fs::path& out_dir) {
   if (o.image_format != "jpg" && o.image_format != "png")
     throw std::invalid_argument("image format '" + o.image_format + "': use jpg or png");
+  StagedOutputDir staged(out_dir, "scene", o.force_output);  // refused before any work
+  const fs::path& tmp = staged.path();
   const auto t_start = std::chrono::steady_clock::now();
   DemoReport report;
   scene::Scene layout = scene::demo_layout(o.layout);
   const std::vector<scene::Camera> rig_true = layout.cameras;
   DemoWorld world(layout, o.world);
-  StagedOutputDir staged(out_dir, "scene", o.force_output);  // refused before any rendering
-  const fs::path& tmp = staged.path();
   fs::create_directories(tmp / "ground_truth");
 
   // Automatic exposure: the front camera's median radiance at frame 0 to a mid-grey.
