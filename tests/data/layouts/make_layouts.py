@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""Writes the three layout-only scenes of the blind command set (tests/data/commands-blind-v2.jsonl).
+
+They differ from the dev layout on purpose: a one-way three-lane street with parking on both sides
+and side streets on both sides; a two-lane road that curves left, with a bus bay and a side street
+to the left; a divided road, three lanes each way, a crossroads at 50 m, parking on the right.
+Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no randomness).
+"""
+import json
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FRAMES, HZ = 100, 10.0
+
+
+def line(x0, y0, x1, y1, step=5.0):
+    n = max(1, round(math.hypot(x1 - x0, y1 - y0) / step))
+    return [[x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n, 0.0] for k in range(n + 1)]
+
+
+def lane(lid, pts, width=3.5, kind="driving"):
+    return {"id": lid, "type": kind, "width": width, "direction": "forward",
+            "centerline": [[round(v, 3) for v in p] for p in pts]}
+
+
+def camera(name, yaw_deg):
+    c, s = math.cos(math.radians(yaw_deg)), math.sin(math.radians(yaw_deg))
+    # OpenCV axes (right, down, forward) in the ego's FLU frame, turned by yaw.
+    r = [[s, 0, c], [-c, 0, s], [0, -1, 0]]
+    m = [r[0] + [1.5], r[1] + [0.0], r[2] + [1.6], [0, 0, 0, 1]]
+    return {"name": name, "width": 1920, "height": 1280, "fx": 2000.0, "fy": 2000.0, "cx": 960.0, "cy": 640.0,
+            "distortion": {"model": "none"}, "sensor_to_ego": [round(v, 12) for row in m for v in row]}
+
+
+def pose(x, y, yaw):
+    c, s = math.cos(yaw), math.sin(yaw)
+    return [c, -s, 0, x, s, c, 0, y, 0, 0, 1, 0, 0, 0, 0, 1]
+
+
+def sample(pts, dist):
+    """Point and yaw at arc length dist along a polyline (extrapolated at both ends)."""
+    acc = 0.0
+    for a, b in zip(pts, pts[1:]):
+        seg = math.hypot(b[0] - a[0], b[1] - a[1])
+        if dist <= acc + seg or b is pts[-1]:
+            t = (dist - acc) / seg
+            return a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, math.atan2(b[1] - a[1], b[0] - a[0])
+        acc += seg
+    raise ValueError("empty polyline")
+
+
+def track_along(pts, s0, speed, reverse_yaw=False):
+    out = []
+    for f in range(FRAMES):
+        x, y, yaw = sample(pts, s0 + speed * f / HZ)
+        out.append({"frame": f, "center": [round(x, 3), round(y, 3), 0.8], "yaw": round(yaw + (math.pi if reverse_yaw else 0), 4)})
+    return out
+
+
+def static(x, y, yaw=0.0):
+    return [{"frame": f, "center": [x, y, 0.8], "yaw": yaw} for f in range(FRAMES)]
+
+
+SIZES = {"vehicle.car": [4.6, 1.9, 1.5], "suv": [4.9, 2.0, 1.8], "vehicle.truck": [7.5, 2.5, 3.2],
+         "vehicle.bus.rigid": [12.0, 2.55, 3.2], "vehicle.motorcycle": [2.1, 0.8, 1.4],
+         "vehicle.bicycle": [1.8, 0.6, 1.5], "human.pedestrian.adult": [0.6, 0.6, 1.75],
+         "movable_object.trafficcone": [0.4, 0.4, 0.7], "vehicle.emergency.police": [4.9, 1.95, 1.6]}
+COLORS = {"red": [200, 30, 30], "white": [235, 235, 235], "black": [20, 20, 22], "silver": [180, 180, 186],
+          "grey": [120, 120, 125], "blue": [30, 60, 200], "green": [30, 140, 50], "yellow": [240, 200, 25],
+          "orange": [240, 120, 20]}
+
+
+def obj(n, category, track, color=None, size=None):
+    o = {"id": f"obj_{n}", "category": category, "size_lwh": size or SIZES[category], "track": track}
+    if color:
+        o["color_rgb"] = COLORS[color]
+    return o
+
+
+def write(name, source, lanes, ego_pts, ego_speed, objects):
+    d = os.path.join(HERE, name)
+    os.makedirs(d, exist_ok=True)
+    frames = []
+    for f in range(FRAMES):
+        x, y, yaw = sample(ego_pts, ego_speed * f / HZ - sample_origin(ego_pts))
+        frames.append({"index": f, "timestamp_s": round(f / HZ, 3), "ego_to_world": pose(round(x, 4), round(y, 4), round(yaw, 6)), "images": {}})
+    scene = {"format": "chatsim-scene/1", "name": name, "source": source, "layout_only": True, "frame_rate_hz": HZ,
+             "ego_origin": "rear_axle", "cameras": [camera("front", 0), camera("front_left", 45), camera("front_right", -45)],
+             "frames": frames}
+    for fname, data in (("scene.json", scene), ("lanes.json", {"lanes": lanes}), ("objects.json", {"objects": objects})):
+        with open(os.path.join(d, fname), "w") as f:
+            json.dump(data, f, indent=1)
+            f.write("\n")
+
+
+def sample_origin(pts):
+    """Arc length of the polyline's first point before x = 0 (the ego starts at the origin)."""
+    return pts[0][0]
+
+
+def oneway():
+    """One-way street, three lanes, parking both sides, side streets right (x=35) and left (x=95)."""
+    lanes = [lane("lane_left", line(-60, 3.5, 220, 3.5)), lane("lane_middle", line(-60, 0, 220, 0)),
+             lane("lane_right", line(-60, -3.5, 220, -3.5)),
+             lane("parking_right_a", line(-60, -6.5, 28, -6.5), 2.5, "parking"),
+             lane("parking_right_b", line(42, -6.5, 220, -6.5), 2.5, "parking"),
+             lane("parking_left_a", line(-60, 6.5, 88, 6.5), 2.5, "parking"),
+             lane("parking_left_b", line(102, 6.5, 220, 6.5), 2.5, "parking"),
+             lane("side_right_south", line(33.25, -7.75, 33.25, -80)), lane("side_right_north", line(36.75, -80, 36.75, -7.75)),
+             lane("side_left_north", line(96.75, 7.75, 96.75, 80)), lane("side_left_south", line(93.25, 80, 93.25, 7.75))]
+    mid = line(-60, 0, 220, 0)
+    left, right = line(-60, 3.5, 220, 3.5), line(-60, -3.5, 220, -3.5)
+    objects = [obj(1, "vehicle.car", static(12, -6.5), "red"), obj(2, "vehicle.car", static(50, -6.5), "silver"),
+               obj(3, "vehicle.car", track_along(left, 80, 9), "blue"), obj(4, "vehicle.truck", track_along(right, 90, 5), "white"),
+               obj(5, "vehicle.car", track_along(mid, 46, 7), "black", SIZES["suv"]),
+               obj(6, "vehicle.motorcycle", track_along(left, 40, 10), "orange"),
+               obj(7, "vehicle.car", static(25, 6.5), "green"), obj(8, "vehicle.bus.rigid", track_along(right, 135, 6), "yellow"),
+               obj(9, "human.pedestrian.adult", track_along(line(-60, -9, 220, -9), 68, 1.3)),
+               obj(10, "vehicle.bicycle", track_along(right, 30, 5), "black"),
+               obj(11, "movable_object.trafficcone", static(40, -5.2), "orange")]
+    write("blind-oneway", "hand-made layout: one-way street, three lanes, parking both sides, side streets right and left",
+          lanes, mid, 7, objects)
+
+
+def curve_pts(x_start, y_offset, radius=150.0, degrees=60.0, x_from=-60.0, step=5.0):
+    """A road along +x that bends left at x_start (centre of the bend on the left); y_offset: lane offset."""
+    pts = [[x, y_offset, 0.0] for x in frange(x_from, x_start, step)]
+    r = radius - y_offset
+    n = int(math.radians(degrees) * radius / step)
+    for k in range(1, n + 1):
+        a = math.radians(degrees) * k / n
+        pts.append([x_start + r * math.sin(a), radius - r * math.cos(a), 0.0])
+    return pts
+
+
+def frange(a, b, step):
+    out, x = [], a
+    while x < b - 1e-9:
+        out.append(x)
+        x += step
+    return out + [b]
+
+
+def curve():
+    """Two-lane road (one each way) bending left from x=30, bus bay on the right, side street left at x=18."""
+    ego = curve_pts(30, 0)
+    oncoming = list(reversed(curve_pts(30, 3.5)))
+    lanes = [lane("eastbound", ego), lane("westbound", oncoming),
+             lane("bus_bay", line(-5, -3.25, 25, -3.25), 3.0, "parking"),
+             lane("side_north", line(19.75, 5.25, 19.75, 80)), lane("side_south", line(16.25, 80, 16.25, 5.25))]
+    length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(oncoming, oncoming[1:]))
+    objects = [obj(1, "vehicle.bus.rigid", static(12, -3.25), "white"),
+               obj(2, "vehicle.car", track_along(ego, 90, 7), "grey"),
+               obj(3, "vehicle.car", track_along(oncoming, length - 121, 10), "red"),
+               obj(4, "vehicle.truck", track_along(oncoming, length - 172, 8), "blue"),
+               obj(5, "vehicle.motorcycle", track_along(ego, 48, 9), "black"),
+               obj(6, "vehicle.car", static(16.25, 11, -math.pi / 2), "yellow"),
+               obj(7, "human.pedestrian.adult", static(10, -6)),
+               obj(8, "human.pedestrian.adult", track_along(line(60, 6, -60, 6), 55, 1.4)),
+               obj(9, "vehicle.car", track_along(oncoming, length - 30, 11), "white")]
+    write("blind-curve", "hand-made layout: two-lane road bending left, bus bay right, side street left",
+          lanes, ego, 9, objects)
+
+
+def divided():
+    """Divided road, three lanes each way (ego in the right lane), crossroads at x=50, parking right to x=30."""
+    lanes = [lane("east_right", line(-60, 0, 220, 0)), lane("east_middle", line(-60, 3.5, 220, 3.5)),
+             lane("east_left", line(-60, 7, 220, 7)),
+             lane("west_left", line(220, 13, -60, 13)), lane("west_middle", line(220, 16.5, -60, 16.5)),
+             lane("west_right", line(220, 20, -60, 20)),
+             lane("parking_right", line(-60, -3, 30, -3), 2.5, "parking"),
+             lane("cross_north", line(51.75, -60, 51.75, 80)), lane("cross_south", line(48.25, 80, 48.25, -60))]
+    east = lambda y: line(-60, y, 220, y)
+    west = lambda y: line(220, y, -60, y)
+    objects = [obj(1, "vehicle.car", track_along(east(3.5), 85, 12), "white"),
+               obj(2, "vehicle.car", track_along(east(7), 50, 15), "red"),
+               obj(3, "vehicle.truck", track_along(east(0), 100, 10), "grey"),
+               obj(4, "vehicle.car", static(10, -3), "black"), obj(5, "vehicle.car", static(-5, -3), "blue"),
+               obj(6, "vehicle.car", track_along(west(13), 150, 14), "silver"),
+               obj(7, "vehicle.bus.rigid", track_along(west(20), 190, 8), "red"),
+               obj(8, "vehicle.car", static(48.25, 24, -math.pi / 2), "green"),
+               obj(9, "vehicle.emergency.police", static(22, -3), "white"),
+               obj(10, "movable_object.trafficcone", static(35, -3), "orange"),
+               obj(11, "human.pedestrian.adult", static(46, -6))]
+    write("blind-divided", "hand-made layout: divided road, three lanes each way, crossroads, parking right",
+          lanes, east(0), 12, objects)
+
+
+if __name__ == "__main__":
+    oneway()
+    curve()
+    divided()
