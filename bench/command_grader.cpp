@@ -260,13 +260,15 @@ std::string check_added(const scene::Scene& s, const json& added, const json& c)
   return "";
 }
 
-std::string check_no_collision(const scene::Scene& s, const json& state) {
+// Every vehicle of the edited scene: labelled ones not removed, then the added ones in order.
+std::vector<agents::motion::Obstacle> vehicles_of(const scene::Scene& s, const json& state, size_t* first_added) {
   std::vector<agents::motion::Obstacle> all;
   const auto removed = state.value("removed", std::vector<std::string>{});
   for (auto& ob : agents::motion::scene_obstacles(s, removed)) {
     const auto* o = s.object(ob.id);
     if (o != nullptr && o->has_category_prefix("vehicle")) all.push_back(std::move(ob));
   }
+  *first_added = all.size();
   for (const auto& v : state.value("added", json::array())) {
     const Track t = track_of(v);
     std::vector<agents::motion::Pose2> poses;
@@ -274,13 +276,27 @@ std::string check_no_collision(const scene::Scene& s, const json& state) {
     const auto sz = v.at("size_lwh").get<std::array<double, 3>>();
     all.push_back(agents::motion::trajectory_obstacle(v.value("id", "added"), {sz[0], sz[1], sz[2]}, poses));
   }
+  return all;
+}
+
+// Whom a meets first (boxes shrunk by 10 %), as "<a> meets <b> at frame f", or "".
+std::string first_meeting(const std::vector<agents::motion::Obstacle>& all, size_t a, size_t others_from) {
+  for (size_t b = others_from; b < all.size(); ++b) {
+    if (b == a) continue;
+    for (size_t f = 0; f < std::min(all[a].poses.size(), all[b].poses.size()); ++f) {
+      if (!all[a].poses[f] || !all[b].poses[f]) continue;
+      if (agents::motion::boxes_overlap(*all[a].poses[f], all[a].size_lwh, *all[b].poses[f], all[b].size_lwh, 0.9))
+        return all[a].id + " meets " + all[b].id + " at frame " + std::to_string(f);
+    }
+  }
+  return "";
+}
+
+std::string check_no_collision(const scene::Scene& s, const json& state) {
+  size_t first_added = 0;
+  const auto all = vehicles_of(s, state, &first_added);
   for (size_t a = 0; a < all.size(); ++a)
-    for (size_t b = a + 1; b < all.size(); ++b)
-      for (size_t f = 0; f < std::min(all[a].poses.size(), all[b].poses.size()); ++f) {
-        if (!all[a].poses[f] || !all[b].poses[f]) continue;
-        if (agents::motion::boxes_overlap(*all[a].poses[f], all[a].size_lwh, *all[b].poses[f], all[b].size_lwh, 0.9))
-          return all[a].id + " meets " + all[b].id + " at frame " + std::to_string(f);
-      }
+    if (auto why = first_meeting(all, a, a + 1); !why.empty()) return why;
   return "";
 }
 
@@ -347,6 +363,9 @@ std::vector<CheckResult> grade_case(const scene::Scene& s, const json& state, co
 
 MotionQuality motion_quality(const scene::Scene& s, const json& state) {
   MotionQuality q;
+  size_t first_added = 0;
+  const auto all = vehicles_of(s, state, &first_added);
+  for (size_t a = first_added; a < all.size(); ++a) q.no_overlap += first_meeting(all, a, 0).empty() ? 1 : 0;
   for (const auto& v : state.value("added", json::array())) {
     const Track t = track_of(v);
     if (t.p.empty()) continue;

@@ -19,13 +19,14 @@ struct CheckResult {
 std::vector<CheckResult> grade_case(const scene::Scene& scene, const nlohmann::json& edit_state,
                                     const nlohmann::json& expect);
 
-// Motion quality of every added vehicle: does it stay on lanes, and does what it does match
-// its resolved intent (action and speed)?
+// Motion quality of every added vehicle: does it stay on lanes, does what it does match its
+// resolved intent (action and speed), and does it keep clear of every other vehicle?
 struct MotionQuality {
   int vehicles = 0;
   int on_lane = 0;
   int action_match = 0;
   int speed_match = 0;
+  int no_overlap = 0;   // meets no other vehicle (labelled and kept, or added) at any frame
 };
 MotionQuality motion_quality(const scene::Scene& scene, const nlohmann::json& edit_state);
 

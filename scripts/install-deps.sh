@@ -15,6 +15,8 @@ PACKAGES=(
   # OpenImageIO's and Imath's CMake files reference these: find_package fails without them.
   openimageio-tools python3-imath
   procps psmisc
+  # English word lists: a word in them is never "corrected" as a typo (agents/language).
+  wamerican wbritish
   # The web page's test drives Debian's Chromium (with the npm playwright-core).
   chromium
   # Fuzzing (scripts/fuzz.sh): clang and its libFuzzer runtime.

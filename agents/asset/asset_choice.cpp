@@ -31,18 +31,25 @@ std::optional<std::string> unknown_brand_in(const std::string& instruction, cons
 AssetRequest parse_asset(const std::string& instruction) {
   auto w = text::words(instruction);
   // What follows a relation names another vehicle ("a police car chasing the porsche").
-  const size_t rel = text::find_any(w, {"chasing", "chases", "following", "follows", "pursuing", "tailing",
+  const size_t rel = text::find_any(w, {"chasing", "chases", "chase the", "following", "follows", "follow the",
+                                        "pursuing", "tailing", "overtake the", "overtakes the", "overtaking the",
+                                        "pass the", "passing the",
+                                        "toward the", "near the", "where the", "instead of the", "in place of the",
                                         "behind the", "behind it", "in front of the", "in front of it", "ahead of the",
                                         "to the front of", "next to the", "beside the", "after the", "left of the",
                                         "right of the", "like the", "same as the"});
   if (rel != std::string::npos && rel > 0) w.resize(rel);
   AssetRequest r;
   const auto types = lexicon::find_types(w);
-  for (const auto& t : types)
-    if (t.type.type != "object" && t.type.type != "pedestrian") {
-      r.type = t.type.type;
-      break;
-    }
+  for (size_t k = 0; k < types.size(); ++k) {
+    const auto& t = types[k];
+    if (t.type.type == "object" || t.type.type == "pedestrian") continue;
+    r.type = t.type.type;
+    // "a police motorbike": of two nouns in a row the last is the head ("police" only qualifies it).
+    if (k + 1 < types.size() && types[k + 1].begin == t.end && types[k + 1].type.type != "object")
+      r.type = types[k + 1].type.type;
+    break;
+  }
   const auto brands = lexicon::find_brands(w);
   if (!brands.empty()) {
     r.brand = brands.front().brand;

@@ -69,16 +69,39 @@ class ViewAgent : public DecisionAgent {
   }
 };
 
+// A labelled object's box at its first frame and its mean speed over the clip (world frame).
+json start_box(const scene::Scene& scene, const scene::ObjectTrack& o) {
+  const auto& first = o.track.front();
+  const auto& last = o.track.back();
+  const auto time_of = [&](int frame) { return frame >= 0 && size_t(frame) < scene.frames.size() ? scene.frames[size_t(frame)].timestamp_s : 0.0; };
+  const double dt = time_of(last.frame) - time_of(first.frame);
+  const double speed = dt > 0 ? (last.center - first.center).head<2>().norm() / dt : 0.0;
+  return {{"id", o.id}, {"x", first.center.x()}, {"y", first.center.y()}, {"yaw", first.yaw},
+          {"size_lwh", {o.size_lwh.x(), o.size_lwh.y(), o.size_lwh.z()}}, {"speed_mps", speed}, {"wrong_way", false}};
+}
+
 class DeletionAgent : public DecisionAgent {
  public:
   using DecisionAgent::DecisionAgent;
   AgentOutcome run(const AgentCall& call) override {
-    if (call.action != "select") return unknown_action(call, "select");
     const auto scene = cached_scene(call.scene);
+    if (call.action == "locate") {  // where the given objects start (removed ones too)
+      json objects = json::array();
+      for (const auto& id : call.args.value("ids", std::vector<std::string>{}))
+        for (const auto& o : scene->objects)
+          if (o.id == id && !o.track.empty()) objects.push_back(start_box(*scene, o));
+      return AgentOutcome::success({{"objects", objects}});
+    }
+    if (call.action != "select") return unknown_action(call, "select, locate");
     const json request = decide(call.args.at("instruction").get<std::string>());
     const auto removed = call.args.value("removed", std::vector<std::string>{});
     const auto sel = deletion::select_objects(*scene, deletion::deletion_request_from_json(request), removed);
-    return AgentOutcome::success({{"request", request}, {"ids", sel.ids}, {"problems", sel.problems}});
+    // Where each selected object starts, so that a vehicle can be placed relative to it.
+    json objects = json::array();
+    for (const auto& id : sel.ids)
+      for (const auto& o : scene->objects)
+        if (o.id == id && !o.track.empty()) objects.push_back(start_box(*scene, o));
+    return AgentOutcome::success({{"request", request}, {"ids", sel.ids}, {"problems", sel.problems}, {"objects", objects}});
   }
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "agents/deletion/lane_relation.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 
@@ -36,6 +37,25 @@ int ordinal(const std::string& w) {
   return 0;
 }
 
+// The lane a phrase names, if any.
+std::optional<std::string> lane_words(const Words& p) {
+  if (text::has_any(p, {"my lane", "our lane", "same lane", "ego lane", "this lane"})) return "ego";
+  if (text::has_any(p, {"middle lane", "center lane", "central lane"})) return "middle";
+  if (text::has_any(p, {"left lane", "left hand lane", "fast lane", "outside lane", "passing lane", "overtaking lane"}))
+    return "left";
+  if (text::has_any(p, {"right lane", "right hand lane", "slow lane", "inside lane", "nearside lane"})) return "right";
+  if (text::has_any(p, {"oncoming", "other carriageway", "opposite carriageway", "other side of the road",
+                        "opposite side of the road", "opposite direction", "other direction", "the other way",
+                        "coming toward", "toward me", "toward us", "coming at me", "coming at us"}))
+    return "oncoming";
+  if (text::has_any(p, {"side street", "side road", "cross street", "crossroads", "junction", "intersection",
+                        "crossing", "cross traffic", "side streets"}))
+    return "cross";
+  if (text::has_any(p, {"parking lane", "parking bay", "bus bay", "bus stop", "parking spot", "parking space"}))
+    return "parking";
+  return std::nullopt;
+}
+
 Selector parse_phrase(const Words& p, const Selector* previous) {
   Selector s;
   const auto types = lexicon::find_types(p);
@@ -47,6 +67,12 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
   } else if (previous != nullptr) {  // "the green one"
     s.category = previous->category;
     s.noun = previous->noun;
+  } else {
+    s.noun = "vehicle";  // nothing named: any vehicle (not a preference for cars)
+  }
+  if (!s.category.empty() || previous == nullptr) {
+    if (s.category.empty() && text::has_any(p, {"ones", "those"})) s.category = "vehicle";  // "the red ones"
+    if (text::has_any(p, {"ones", "those"})) s.quantity = "all";
   }
   if (text::has_any(p, {"everything", "all objects", "anything", "every object"})) {
     s.category = "";
@@ -55,11 +81,19 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
   if (text::has_any(p, {"all", "every", "each", "any"})) s.quantity = "all";
   const auto colors = lexicon::find_colors(p);
   if (!colors.empty()) s.color = lexicon::color_class(colors.front().rgb);
+  s.lane = lane_words(p);
+  if (text::has_any(p, {"following me", "following us", "tailing me", "tailing us"})) {
+    s.lane = "ego";
+    s.region = "back";
+  }
+  // "the left lane" names a lane, not a side: the side words only count outside a lane phrase.
+  const bool side_is_lane = s.lane == "left" || s.lane == "right";
   if (text::has_any(p, {"in front", "ahead", "front"})) s.region = "front";
   else if (text::has_any(p, {"behind", "back", "rear"})) s.region = "back";
-  else if (text::has_any(p, {"left"})) s.region = "left";
-  else if (text::has_any(p, {"right"})) s.region = "right";
-  if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still"})) s.moving = false;
+  else if (!side_is_lane && text::has_any(p, {"left"})) s.region = "left";
+  else if (!side_is_lane && text::has_any(p, {"right"})) s.region = "right";
+  if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting"}))
+    s.moving = false;
   else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling"})) s.moving = true;
   if (text::has_any(p, {"closest", "nearest", "near", "close"})) s.order = "nearest";
   else if (text::has_any(p, {"farthest", "furthest", "far", "most distant"})) s.order = "farthest";
@@ -87,12 +121,14 @@ struct Candidate {
   const scene::ObjectTrack* object;
   Eigen::Vector2d pe;   // ego frame 0
   double speed;
+  LaneRelation lane;
 };
 
 bool matches(const Selector& s, const Candidate& c) {
   if (!s.category.empty() && !c.object->has_category_prefix(s.category)) return false;
   if (s.color && (!c.object->color_rgb || lexicon::color_class(*c.object->color_rgb) != *s.color)) return false;
   if (s.moving && (c.speed > 0.5) != *s.moving) return false;
+  if (s.lane && !has_lane(c.lane, *s.lane)) return false;
   if (s.region) {
     const double a = std::atan2(c.pe.y(), c.pe.x()) * 180 / std::numbers::pi;
     if (*s.region == "front" && !(c.pe.x() > 0 && std::abs(a) <= 60)) return false;
@@ -113,6 +149,7 @@ std::string describe(const Selector& s) {
   if (s.color) out += *s.color + " ";
   out += s.noun.empty() ? "object" : s.noun;
   if (s.region) out += " (" + *s.region + ")";
+  if (s.lane) out += " (lane: " + *s.lane + ")";
   return out;
 }
 
@@ -158,6 +195,7 @@ static nlohmann::json selector_json(const Selector& s) {
   if (s.quantity == "n") j["n"] = s.n;
   if (s.color) j["color"] = *s.color;
   if (s.region) j["region"] = *s.region;
+  if (s.lane) j["lane"] = *s.lane;
   if (s.moving) j["moving"] = *s.moving;
   if (s.order) {
     j["order"] = *s.order;
@@ -174,6 +212,7 @@ static Selector selector_from(const nlohmann::json& j) {
   s.n = j.value("n", 1);
   if (j.contains("color")) s.color = j["color"].get<std::string>();
   if (j.contains("region")) s.region = j["region"].get<std::string>();
+  if (j.contains("lane")) s.lane = j["lane"].get<std::string>();
   if (j.contains("moving")) s.moving = j["moving"].get<bool>();
   if (j.contains("order")) s.order = j["order"].get<std::string>();
   s.nth = j.value("nth", 1);
@@ -214,7 +253,7 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
       const double dt = scene.frames[size_t(last)].timestamp_s - scene.frames[0].timestamp_s;
       if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
     }
-    cands.push_back({&o, (to_ego * p0->center).head<2>(), speed});
+    cands.push_back({&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>())});
   }
   std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.pe.norm() < b.pe.norm(); });
   std::vector<std::string> chosen;
@@ -226,6 +265,13 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
       out.problems.push_back("no " + describe(t).substr(t.quantity == "all" ? 6 : 4) + " in the scene" +
                              (removed.empty() ? "" : " (or it was already removed)"));
       continue;
+    }
+    // "the white car" means a passenger car when one matches, not the white bus.
+    if (t.quantity != "all" && t.category == "vehicle" && t.noun.find("car") != std::string::npos) {
+      std::vector<const Candidate*> cars;
+      for (const auto* c : m)
+        if (c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency")) cars.push_back(c);
+      if (!cars.empty()) m = cars;
     }
     if (t.order == "farthest") std::reverse(m.begin(), m.end());
     // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.

@@ -16,6 +16,7 @@ struct Selector {
   std::string noun = "car";             // as said, for messages
   std::optional<std::string> color;     // basic colour class
   std::optional<std::string> region;    // front, back, left, right
+  std::optional<std::string> lane;      // ego, left, middle, right, oncoming, cross, parking (lane_relation.hpp)
   std::optional<bool> moving;
   std::string quantity = "one";         // one, all, n
   int n = 1;

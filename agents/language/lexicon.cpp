@@ -1,8 +1,16 @@
 #include "agents/language/lexicon.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <unordered_set>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "agents/language/text.hpp"
 
@@ -104,42 +112,172 @@ const std::vector<Noun>& nouns() {
       {"barricades", "barrier", true},   {"barricade", "barrier", false},     {"roadblock", "barrier", false},
       {"pedestrians", "pedestrian", true}, {"pedestrian", "pedestrian", false}, {"people", "pedestrian", true},
       {"person", "pedestrian", false},   {"persons", "pedestrian", true},    {"walkers", "pedestrian", true},
-      {"objects", "object", true},       {"things", "object", true}};
+      {"objects", "object", true},       {"things", "object", true},         {"traffic", "car", true},
+      {"cyclists", "bicycle", true},     {"cyclist", "bicycle", false},       {"tankers", "truck", true},
+      {"tanker", "truck", false},        {"lorries", "truck", true},          {"lorry", "truck", false},
+      {"motorbike rider", "motorcycle", false}};
   return n;
 }
 
-struct Brand {
-  const char* word;
-  const char* brand;
-  const char* type;
+// A make and its models as vehicles.json lists them, each name already split into words.
+struct Make {
+  std::string brand, type;
+  std::vector<std::vector<std::string>> names;
+  std::vector<std::pair<std::vector<std::string>, std::string>> models;  // longest first
+  bool ambiguous = false;
 };
 
-const std::vector<Brand>& brands() {
-  static const std::vector<Brand> b{
-      {"porsche", "porsche", "car"},       {"tesla", "tesla", "car"},           {"mini", "mini", "car"},
-      {"cooper", "mini", "car"},           {"chevrolet", "chevrolet", "car"},   {"chevy", "chevrolet", "car"},
-      {"bmw", "bmw", "car"},               {"audi", "audi", "car"},             {"mercedes", "mercedes", "car"},
-      {"benz", "mercedes", "car"},         {"toyota", "toyota", "car"},         {"honda", "honda", "car"},
-      {"ford", "ford", "car"},             {"volkswagen", "volkswagen", "car"}, {"vw", "volkswagen", "car"},
-      {"nissan", "nissan", "car"},         {"hyundai", "hyundai", "car"},       {"kia", "kia", "car"},
-      {"volvo", "volvo", "car"},           {"lexus", "lexus", "car"},           {"ferrari", "ferrari", "car"},
-      {"lamborghini", "lamborghini", "car"}, {"mazda", "mazda", "car"},         {"subaru", "subaru", "car"},
-      {"peugeot", "peugeot", "car"},       {"renault", "renault", "car"},       {"fiat", "fiat", "car"},
-      {"skoda", "skoda", "car"},           {"dodge", "dodge", "car"},           {"cadillac", "cadillac", "car"},
-      {"jaguar", "jaguar", "car"},         {"bentley", "bentley", "car"},       {"maserati", "maserati", "car"},
-      {"mclaren", "mclaren", "car"},       {"bugatti", "bugatti", "car"},       {"lotus", "lotus", "car"},
-      {"citroen", "citroen", "car"},       {"opel", "opel", "car"},             {"buick", "buick", "car"},
-      {"chrysler", "chrysler", "car"},     {"infiniti", "infiniti", "car"},     {"acura", "acura", "car"},
-      {"genesis", "genesis", "car"},       {"polestar", "polestar", "car"},     {"rivian", "rivian", "truck"},
-      {"jeep", "jeep", "suv"},             {"landrover", "landrover", "suv"},   {"range rover", "landrover", "suv"},
-      {"land rover", "landrover", "suv"},  {"hummer", "hummer", "suv"},         {"ram", "ram", "truck"},
-      {"scania", "scania", "truck"},       {"man", "man", "truck"},             {"iveco", "iveco", "truck"},
-      {"kenworth", "kenworth", "truck"},   {"peterbilt", "peterbilt", "truck"}, {"harley", "harley", "motorcycle"},
-      {"ducati", "ducati", "motorcycle"},  {"yamaha", "yamaha", "motorcycle"},  {"kawasaki", "kawasaki", "motorcycle"}};
-  return b;
+std::filesystem::path vocabulary_file() {
+  if (const char* env = std::getenv("CHATSIM_PROMPTS"); env != nullptr && *env != '\0')
+    return std::filesystem::path(env) / "vehicles.json";
+  return std::filesystem::path(CHATSIM_PROMPTS_DIR) / "vehicles.json";
+}
+
+std::vector<Make> load_makes() {
+  const auto file = vocabulary_file();
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read the vehicle vocabulary " + file.string() +
+                                    " (set CHATSIM_PROMPTS to the agents/prompts folder)");
+  std::vector<Make> out;
+  try {
+    const auto doc = nlohmann::json::parse(in);
+    for (const auto& m : doc.at("makes")) {
+      Make make{m.at("make"), m.at("type"), {}, {}, m.value("ambiguous", false)};
+      for (const auto& n : m.at("names")) make.names.push_back(text::words(n.get<std::string>()));
+      for (const auto& [model, type] : m.at("models").items()) make.models.emplace_back(text::words(model), type);
+      std::stable_sort(make.models.begin(), make.models.end(),
+                       [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
+      out.push_back(std::move(make));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": not a vehicle vocabulary (makes[].make, type, names, models): " + e.what());
+  }
+  return out;
+}
+
+const std::vector<Make>& makes() {
+  static const std::vector<Make> m = load_makes();
+  return m;
+}
+
+bool words_at(const std::vector<std::string>& w, size_t at, const std::vector<std::string>& phrase) {
+  if (phrase.empty() || at + phrase.size() > w.size()) return false;
+  for (size_t k = 0; k < phrase.size(); ++k)
+    if (w[at + k] != phrase[k]) return false;
+  return true;
+}
+
+bool is_unit_word(const std::string& w) {
+  static const char* kUnits[] = {"m", "meter", "meters", "km", "km/h", "mph", "m/s", "degrees", "degree", "cm", "feet", "ft"};
+  for (const char* u : kUnits)
+    if (w == u) return true;
+  return false;
+}
+
+// The model named right after a make ("x5", "model y", "mx 5"), not a number that is a distance.
+std::optional<std::pair<size_t, std::string>> model_after(const Make& make, const std::vector<std::string>& w, size_t at) {
+  for (const auto& [words, type] : make.models)
+    if (words_at(w, at, words) && !(at + words.size() < w.size() && is_unit_word(w[at + words.size()])))
+      return std::make_pair(words.size(), type);
+  return std::nullopt;
+}
+
+// At most one edit apart: an insertion, a deletion, a substitution, or a swap of neighbours.
+bool one_edit_apart(const std::string& a, const std::string& b) {
+  if (a == b) return false;
+  const size_t n = a.size(), m = b.size();
+  if (n == m) {
+    size_t first = n;
+    for (size_t i = 0; i < n; ++i)
+      if (a[i] != b[i]) {
+        first = i;
+        break;
+      }
+    size_t diffs = 0;
+    for (size_t i = 0; i < n; ++i) diffs += a[i] != b[i];
+    if (diffs == 1) return true;
+    return diffs == 2 && first + 1 < n && a[first] == b[first + 1] && a[first + 1] == b[first] &&
+           a.substr(first + 2) == b.substr(first + 2);
+  }
+  if (n + 1 != m && m + 1 != n) return false;
+  const std::string& shorter = n < m ? a : b;
+  const std::string& longer = n < m ? b : a;
+  size_t i = 0;
+  while (i < shorter.size() && shorter[i] == longer[i]) ++i;
+  return shorter.substr(i) == longer.substr(i + 1);
+}
+
+bool is_swap(const std::string& a, const std::string& b) {
+  return a.size() == b.size() && a != b && one_edit_apart(a, b) &&
+         std::count_if(a.begin(), a.end(), [&, i = size_t(0)](char c) mutable { return c != b[i++]; }) == 2;
+}
+
+const std::vector<std::string>& known_words() {
+  static const std::vector<std::string> known = [] {
+    std::vector<std::string> out;
+    const auto file = vocabulary_file().parent_path() / "words.json";
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error("cannot read the word list " + file.string() + " (set CHATSIM_PROMPTS to the agents/prompts folder)");
+    try {
+      const auto doc = nlohmann::json::parse(in);  // named: a temporary would die before the loop runs
+      for (const auto& w : doc.at("words")) out.push_back(w.get<std::string>());
+    } catch (const nlohmann::json::exception& e) {
+      throw std::runtime_error(file.string() + ": not a word list (words: [...]): " + e.what());
+    }
+    for (const auto& c : base_colors()) out.push_back(c.name);
+    for (const auto& n : nouns())
+      for (const auto& w : text::words(n.phrase)) out.push_back(w);
+    for (const auto& m : makes()) {
+      for (const auto& name : m.names) out.insert(out.end(), name.begin(), name.end());
+      for (const auto& model : m.models) out.insert(out.end(), model.first.begin(), model.first.end());
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }();
+  return known;
+}
+
+// English words (Debian's wamerican and wbritish lists, lower case): never taken for typos.
+const std::unordered_set<std::string>& english_words() {
+  static const std::unordered_set<std::string> words = [] {
+    std::unordered_set<std::string> out;
+    std::vector<std::filesystem::path> files{"/usr/share/dict/american-english", "/usr/share/dict/british-english"};
+    if (const char* env = std::getenv("CHATSIM_WORDLIST"); env != nullptr && *env != '\0') files = {env};
+    for (const auto& f : files) {
+      std::ifstream in(f);
+      for (std::string line; std::getline(in, line);) {
+        if (line.size() > 2 && line.compare(line.size() - 2, 2, "'s") == 0) continue;
+        std::transform(line.begin(), line.end(), line.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        out.insert(line);
+      }
+    }
+    return out;
+  }();
+  return words;
 }
 
 }  // namespace
+
+void correct_typos(std::vector<std::string>& w) {
+  const auto& english = english_words();
+  if (english.empty()) return;  // without a word list every unknown word could be a name: change nothing
+  const auto& known = known_words();
+  for (auto& word : w) {
+    if (word.size() < 3 || text::is_number_word(word) || english.contains(word) ||
+        std::binary_search(known.begin(), known.end(), word))
+      continue;
+    if (!std::all_of(word.begin(), word.end(), [](char c) { return c >= 'a' && c <= 'z'; })) continue;
+    const std::string* match = nullptr;
+    int found = 0;
+    for (const auto& k : known) {
+      if (k.size() < 3 || (word.size() == 3 ? !is_swap(word, k) : (k.size() < 4 || !one_edit_apart(word, k)))) continue;
+      match = &k;
+      ++found;
+    }
+    if (found == 1) word = *match;
+  }
+}
 
 std::string color_class(const Rgb& rgb) {
   const double r = rgb[0] / 255.0, g = rgb[1] / 255.0, b = rgb[2] / 255.0;
@@ -210,20 +348,23 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
 
 std::vector<BrandMention> find_brands(const std::vector<std::string>& w) {
   std::vector<BrandMention> out;
-  for (const auto& b : brands()) {
-    const size_t n = text::words(b.word).size();
-    for (size_t at = text::find_phrase(w, b.word); at != std::string::npos; at = text::find_phrase(w, b.word, at + 1)) {
-      // "man" and "mini" are ordinary words too; only count them before a vehicle noun or alone as a name.
-      const std::string word = b.word;
-      if (word == "man" && (at + 1 >= w.size() || (w[at + 1] != "truck" && w[at + 1] != "trucks"))) continue;
-      if (word == "mini" && at + 1 < w.size() && (w[at + 1] == "van" || w[at + 1] == "bus")) continue;
-      if (word == "ram" && at + 1 < w.size() && w[at + 1] == "into") continue;
-      bool dup = false;
-      for (const auto& o : out) dup = dup || (o.begin <= at && at < o.end);
-      if (!dup) out.push_back({b.brand, b.type, at, at + n});
+  for (size_t at = 0; at < w.size(); ++at) {
+    for (const auto& make : makes()) {
+      size_t n = 0;
+      for (const auto& name : make.names)
+        if (words_at(w, at, name)) n = std::max(n, name.size());
+      if (n == 0) continue;
+      const auto model = model_after(make, w, at + n);
+      const bool noun_follows = at + n < w.size() && !find_types({w[at + n]}).empty();
+      // A make that is also an ordinary word ("man", "seat") counts only before a model or a noun.
+      if (make.ambiguous && !model && !noun_follows) continue;
+      if (make.brand == "mini" && at + n < w.size() && (w[at + n] == "van" || w[at + n] == "bus")) continue;
+      BrandMention m{make.brand, model ? model->second : make.type, at, at + n + (model ? model->first : 0)};
+      out.push_back(m);
+      at = m.end - 1;
+      break;
     }
   }
-  std::sort(out.begin(), out.end(), [](const BrandMention& a, const BrandMention& b) { return a.begin < b.begin; });
   return out;
 }
 
@@ -231,7 +372,7 @@ std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {
   static const char* kNouns[] = {"helicopter", "helicopters", "plane", "planes", "airplane", "aeroplane", "boat",
                                  "boats", "ship", "train", "trains", "tram", "tank", "tanks", "horse", "horses",
                                  "dog", "dogs", "cat", "cats", "cow", "cows", "dinosaur", "spaceship", "ufo",
-                                 "rocket", "submarine", "elephant", "giraffe", "unicorn", "dragon", "tree", "trees",
+                                 "rocket", "submarine", "saucer", "saucers", "hovercraft", "blimp", "zeppelin", "elephant", "giraffe", "unicorn", "dragon", "tree", "trees",
                                  "house", "houses", "building", "buildings"};
   for (const auto& word : w)
     for (const char* n : kNouns)

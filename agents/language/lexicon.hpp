@@ -48,4 +48,10 @@ std::optional<std::string> unsupported_noun(const std::vector<std::string>& word
 
 bool is_color_word(const std::string& w);
 
+// Misspelt words read as the domain word one edit away ("delte" -> "delete", "rigth" -> "right",
+// "motorcyle" -> "motorcycle"), in place. Domain words: words.json, vehicles.json, colours and
+// nouns. A word of the English word lists (/usr/share/dict, $CHATSIM_WORDLIST) is never changed,
+// nor one with two equally near domain words; without a word list nothing is changed.
+void correct_typos(std::vector<std::string>& words);
+
 }  // namespace chatsim::agents::lexicon

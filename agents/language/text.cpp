@@ -3,13 +3,16 @@
 #include <cctype>
 #include <charconv>
 #include <map>
+#include <utility>
+#include <vector>
 
 namespace chatsim::agents::text {
 namespace {
 
 const std::map<std::string, std::string>& spellings() {
   static const std::map<std::string, std::string> m{
-      {"metres", "meters"}, {"metre", "meter"}, {"colour", "color"}, {"grey", "gray"},
+      {"metres", "meters"}, {"metre", "meter"}, {"kilometres", "kilometers"}, {"kilometre", "kilometer"},
+      {"centimetres", "centimeters"}, {"centimetre", "centimeter"}, {"colour", "color"}, {"grey", "gray"},
       {"towards", "toward"}, {"kph", "km/h"}, {"kmh", "km/h"}, {"kmph", "km/h"}, {"mins", "minutes"},
       {"centre", "center"}, {"lorry", "truck"}, {"lorries", "trucks"}, {"tyre", "tire"}};
   return m;
@@ -36,9 +39,32 @@ std::optional<double> parse_digits(const std::string& s) {
   return v;
 }
 
+// Accented Latin letters as their plain letter ("Škoda" -> "Skoda"), typographic quotes and
+// dashes as ASCII, and the degree sign as a word: users write all of these.
+std::string fold_characters(std::string_view s) {
+  static const std::vector<std::pair<std::string_view, std::string_view>> table{{"à", "a"}, {"á", "a"}, {"â", "a"}, {"ã", "a"}, {"ä", "a"}, {"å", "a"}, {"À", "a"}, {"Á", "a"}, {"Â", "a"}, {"Ã", "a"}, {"Ä", "a"}, {"Å", "a"}, {"ç", "c"}, {"č", "c"}, {"ć", "c"}, {"Ç", "c"}, {"Č", "c"}, {"Ć", "c"}, {"è", "e"}, {"é", "e"}, {"ê", "e"}, {"ë", "e"}, {"ě", "e"}, {"È", "e"}, {"É", "e"}, {"Ê", "e"}, {"Ë", "e"}, {"Ě", "e"}, {"ì", "i"}, {"í", "i"}, {"î", "i"}, {"ï", "i"}, {"Ì", "i"}, {"Í", "i"}, {"Î", "i"}, {"Ï", "i"}, {"ñ", "n"}, {"ń", "n"}, {"ň", "n"}, {"Ñ", "n"}, {"Ń", "n"}, {"Ň", "n"}, {"ò", "o"}, {"ó", "o"}, {"ô", "o"}, {"õ", "o"}, {"ö", "o"}, {"ø", "o"}, {"Ò", "o"}, {"Ó", "o"}, {"Ô", "o"}, {"Õ", "o"}, {"Ö", "o"}, {"Ø", "o"}, {"ù", "u"}, {"ú", "u"}, {"û", "u"}, {"ü", "u"}, {"ů", "u"}, {"Ù", "u"}, {"Ú", "u"}, {"Û", "u"}, {"Ü", "u"}, {"Ů", "u"}, {"ý", "y"}, {"ÿ", "y"}, {"Ý", "y"}, {"š", "s"}, {"ś", "s"}, {"Š", "s"}, {"Ś", "s"}, {"ž", "z"}, {"ź", "z"}, {"ż", "z"}, {"Ž", "z"}, {"Ź", "z"}, {"Ż", "z"}, {"ř", "r"}, {"Ř", "r"}, {"ł", "l"}, {"Ł", "l"}, {"ğ", "g"}, {"Ğ", "g"}, {"ß", "ss"}, {"°", " degrees "}, {"–", " "}, {"—", " "}, {"’", "'"}, {"‘", "'"}, {"“", " "}, {"”", " "}};
+  std::string out;
+  out.reserve(s.size());
+  for (size_t i = 0; i < s.size();) {
+    bool replaced = false;
+    if (static_cast<unsigned char>(s[i]) >= 0x80)
+      for (const auto& [from, to] : table)
+        if (s.substr(i, from.size()) == from) {
+          out += to;
+          i += from.size();
+          replaced = true;
+          break;
+        }
+    if (!replaced) out += s[i++];
+  }
+  return out;
+}
+
 }  // namespace
 
-std::vector<std::string> words(std::string_view s) {
+std::vector<std::string> words(std::string_view s_in) {
+  const std::string folded = fold_characters(s_in);
+  const std::string_view s = folded;
   std::vector<std::string> out;
   std::string cur;
   auto flush = [&] {
@@ -156,6 +182,10 @@ std::optional<double> number_at(const std::vector<std::string>& w, size_t i, siz
   if (i + n < w.size() && (w[i + n] == "hundred" || w[i + n] == "thousand") && v < 100) {
     v *= nw.at(w[i + n]);
     ++n;
+  }
+  if (v >= 1 && i + n + 2 < w.size() && w[i + n] == "and" && w[i + n + 1] == "a" && w[i + n + 2] == "half") {
+    v += 0.5;  // "one and a half", "seven and a half"
+    n += 3;
   }
   if (i + n < w.size() && w[i + n] == "of") ++n;  // "a couple of"
   if (used) *used = n;

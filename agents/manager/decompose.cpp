@@ -12,6 +12,8 @@ namespace {
 using Words = std::vector<std::string>;
 using text::has_any;
 
+bool mentions_vehicle(const Words& w);
+
 const std::vector<std::string>& add_verbs() {
   static const std::vector<std::string> v{"add", "adds", "put", "place", "insert", "spawn", "create", "include",
                                           "generate", "introduce", "bring", "drop", "park", "position", "there"};
@@ -52,6 +54,16 @@ std::vector<std::string> sentences(const std::string& s) {
 }
 
 // Clauses: a sentence split before ", and VERB", "and VERB", ", VERB", "then VERB".
+// After a comma, "a mercedes van parked where it was" or "the view rotated 15 degrees": a
+// clause of its own although no verb starts it.
+bool names_new_part(const Words& w, size_t i) {
+  if (w[i] == "and" && i + 1 < w.size()) ++i;
+  if (w[i] == "the" && i + 1 < w.size() && (w[i + 1] == "view" || w[i + 1] == "camera" || w[i + 1] == "viewpoint"))
+    return true;
+  if (w[i] != "a" && w[i] != "an" && !text::is_number_word(w[i])) return false;
+  return mentions_vehicle(Words(w.begin() + long(i), w.begin() + long(std::min(w.size(), i + 5))));
+}
+
 std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before) {
   std::vector<Words> out(1);
   for (size_t i = 0; i < w.size(); ++i) {
@@ -60,11 +72,14 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
     if (connector && i + 1 < w.size()) {
       size_t j = i + 1;
       while (j < w.size() && (w[j] == "then" || w[j] == "also" || w[j] == "please" || w[j] == "finally")) ++j;
-      if (j < w.size() && starts_instruction(w[j])) {
+      // "... and have the ego drive slowly", "... and let it turn left": a new instruction too.
+      const bool have_object = j + 1 < w.size() && (w[j] == "have" || w[j] == "let") &&
+                               (w[j + 1] == "the" || w[j + 1] == "it" || w[j + 1] == "them" || w[j + 1] == "ego");
+      if (j < w.size() && (starts_instruction(w[j]) || have_object || (comma_before[i] && names_new_part(w, j)))) {
         split = true;
         i = j - 1;  // drop the connector words
       }
-    } else if (comma_before[i] && starts_instruction(w[i])) {
+    } else if (comma_before[i] && (starts_instruction(w[i]) || names_new_part(w, i))) {
       out.emplace_back();
     }
     if (split) {
@@ -95,7 +110,9 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
   for (auto& c : out) {
     while (!c.empty() && (c.front() == "additionally" || c.front() == "also" || c.front() == "then" || c.front() == "now" ||
                           c.front() == "please" || c.front() == "and" || c.front() == "finally" || c.front() == "next" ||
-                          c.front() == "first" || c.front() == "lastly" || c.front() == "ok" || c.front() == "okay"))
+                          c.front() == "first" || c.front() == "lastly" || c.front() == "ok" || c.front() == "okay" ||
+                          c.front() == "actually" || c.front() == "sorry" || c.front() == "wait" || c.front() == "oh" ||
+                          c.front() == "hmm" || c.front() == "hey" || (c.front() == "no" && !mentions_vehicle(c))))
       c.erase(c.begin());
   }
   out.erase(std::remove_if(out.begin(), out.end(), [](const Words& c) { return c.empty(); }), out.end());
@@ -108,15 +125,30 @@ bool mentions_vehicle(const Words& w) {
   return !lexicon::find_brands(w).empty();
 }
 
-bool refers_to_added(const Words& w) {
+bool refers_to_added(const Words& w_in) {
+  // "leave the bus where it is": that "it" is the bus, not something added.
+  Words w = w_in;
+  for (const char* p : {"where it is", "as it is", "where they are", "as they are", "where it was", "in its place"})
+    for (size_t at = text::find_phrase(w, p); at != std::string::npos; at = text::find_phrase(w, p))
+      w.erase(w.begin() + long(at), w.begin() + long(at + text::words(p).size()));
   return has_any(w, {"it", "its", "them", "their", "both", "they", "added", "new", "you added", "i added", "we added",
                      "inserted", "that car", "this car", "the one"});
 }
 
-// "add a porsche ahead and a mini on my left" -> two add texts.
+// "add a porsche ahead and a mini on my left" -> two add texts; "a car stopped ahead with cones
+// behind it" -> the car, then the cones placed relative to it.
 std::vector<Words> split_additions(const Words& c) {
   std::vector<Words> out(1);
   for (size_t i = 0; i < c.size(); ++i) {
+    if (c[i] == "with" && i + 1 < c.size() && i > 0) {
+      Words rest(c.begin() + long(i) + 1, c.end());
+      const auto types = lexicon::find_types(rest);
+      if (!types.empty() && types.front().begin <= 2 && mentions_vehicle(Words(c.begin(), c.begin() + long(i))) &&
+          types.front().type.type != "pedestrian" && types.front().type.type != "object") {
+        out.emplace_back(Words{"add"});
+        continue;
+      }
+    }
     if ((c[i] == "and" || c[i] == "plus") && i + 2 < c.size() &&
         (c[i + 1] == "a" || c[i + 1] == "an" || c[i + 1] == "another" ||
          (text::is_number_word(c[i + 1]) && c[i + 1] != "half")) &&
@@ -168,7 +200,8 @@ Instruction classify(const Words& c) {
   };
   if (has_any(c, {"put back", "bring back", "restore", "undo the deletion", "undo the removal", "undelete",
                   "add back", "re-add", "readd", "put it back", "put them back", "undo", "add it back",
-                  "add them back", "bring it back", "bring them back"})) {
+                  "add them back", "bring it back", "bring them back", "keep it", "keep that", "keep them",
+                  "never mind", "nevermind"})) {
     in.kind = "restore";
     in.target = in.text;
     return in;
@@ -182,6 +215,13 @@ Instruction classify(const Words& c) {
     in.kind = "busy_road";
     return in;
   }
+  // "no parked cars", "nothing parked anywhere": what should not be there is to be removed.
+  if ((first == "no" || first == "nothing") && c.size() > 1 &&
+      (mentions_vehicle(c) || has_any(c, {"parked", "moving", "stopped"}))) {
+    in.kind = "delete";
+    in.text = "remove all " + text::join(c, 1) + (mentions_vehicle(c) ? "" : " vehicles");
+    return in;
+  }
   if (has_any(c, {"road empty", "empty road", "empty the road", "empty street", "street empty", "no cars", "no vehicles",
                   "clear the road", "clear the street", "deserted", "without any cars", "without cars", "without vehicles",
                   "no traffic", "road clear", "street clear", "road is empty"})) {
@@ -189,13 +229,21 @@ Instruction classify(const Words& c) {
     in.text = "remove all vehicles";
     return in;
   }
-  if (has_any(c, {"construction zone", "construction site", "road work", "roadwork", "roadworks", "work zone",
+  if (has_any(c, {"construction zone", "construction site", "road work", "road works", "roadwork", "roadworks", "work zone",
                   "construction area", "lane closure", "road closure", "close the lane", "closed lane"})) {
     in.kind = "construction_zone";
     return in;
   }
   const bool vehicle = mentions_vehicle(c);
   const bool added_ref = refers_to_added(c);
+  // "I'd like the bus gone", "I want the red car removed": a deletion said by its result.
+  if (vehicle && !starts(add_verbs()) &&
+      has_any(c, {"gone", "removed", "deleted", "erased", "out of the way", "out of the picture", "out of the scene"})) {
+    in.kind = added_ref ? "remove_added" : "delete";
+    in.target = added_ref ? in.text : "";
+    in.text = "remove " + in.text;
+    return in;
+  }
   if (starts(delete_verbs()) || has_any(c, {"get rid of", "take away", "take out"})) {
     in.kind = added_ref ? "remove_added" : "delete";
     in.target = added_ref ? in.text : "";
@@ -211,6 +259,16 @@ Instruction classify(const Words& c) {
     in.text = t;
     return in;
   }
+  if (starts(add_verbs())) {
+    // "add a flying saucer above the bus": what is to be added is no vehicle, whatever follows.
+    const auto bad = lexicon::unsupported_noun(c);
+    const auto types = lexicon::find_types(c);
+    if (bad && (types.empty() || text::find_phrase(c, *bad) < types.front().begin)) {
+      in.kind = "unclear";
+      in.target = *bad;
+      return in;
+    }
+  }
   if (starts(add_verbs()) && (vehicle || has_any(c, {"another", "one more", "one"}))) {
     in.kind = "add";
     if (has_any(c, {"another", "one more", "another one", "same", "similar"}) &&
@@ -221,13 +279,16 @@ Instruction classify(const Words& c) {
   const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
                           has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"});
   const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "set", "paint", "recolor", "turn",
-                                       "move", "speed", "slow", "swap", "replace", "switch", "should"});
-  if (!view_words && (added_ref || vehicle) && revise_verb) {
+                                       "move", "speed", "slow", "swap", "replace", "switch", "should", "park", "stop",
+                                       "pull", "reverse", "accelerate", "brake"});
+  // "the white one", "the second one": a vehicle named by what tells it apart.
+  const bool one_ref = has_any(c, {"one", "ones"}) && !starts(add_verbs());
+  if (!view_words && (added_ref || vehicle || one_ref) && revise_verb) {
     in.kind = "revise";
     in.target = reference_in(in.text);
     return in;
   }
-  if (view_words || has_any(c, {"move", "shift", "raise", "lower", "rotate", "look", "pan", "tilt", "turn"})) {
+  if (view_words || has_any(c, {"move", "shift", "raise", "lower", "rotate", "look", "pan", "tilt", "turn", "go", "slide", "nudge"})) {
     const auto w = c;
     const bool has_amount = !text::quantities(w, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty();
     if (view_words || has_amount) {
@@ -239,14 +300,41 @@ Instruction classify(const Words& c) {
     in.kind = "add";
     return in;
   }
+  // "2 m forward", "another 10 degrees left": an amount and a direction with nothing else named
+  // moves the view.
+  if (!text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "cm", "feet", "ft"}).empty() &&
+      has_any(c, {"forward", "ahead", "back", "backward", "left", "right", "up", "down", "higher", "lower"})) {
+    in.kind = "view";
+    return in;
+  }
   in.kind = "unclear";
   return in;
 }
 
 }  // namespace
 
+namespace {
+
+// "an ambulance and two police cars rushing toward me": a part that ends with its noun takes the
+// words that follow the next part's noun (how and where they all go).
+void share_trailing_words(std::vector<Words>& parts) {
+  for (size_t k = parts.size(); k-- > 1;) {
+    const auto own = lexicon::find_types(parts[k - 1]);
+    const auto next = lexicon::find_types(parts[k]);
+    if (own.empty() || next.empty() || own.back().end != parts[k - 1].size()) continue;
+    parts[k - 1].insert(parts[k - 1].end(), parts[k].begin() + long(next.front().end), parts[k].end());
+  }
+}
+
+}  // namespace
+
 std::string reference_in(const std::string& clause) {
   const Words w = text::words(clause);
+  // "make it chase the red car": the object right after the verb is what changes.
+  if (w.size() > 1 && (w[1] == "it" || w[1] == "them") &&
+      (w[0] == "make" || w[0] == "have" || w[0] == "let" || w[0] == "turn" || w[0] == "move" || w[0] == "park" ||
+       w[0] == "change" || w[0] == "paint" || w[0] == "set"))
+    return w[1];
   if (text::has_any(w, {"both of them", "both", "all of them", "them", "they", "all the added", "all added", "each of them"}))
     return text::has_any(w, {"both"}) ? "both" : "them";
   // "the added car", "the porsche", "the police car", "the porsche i added"
@@ -298,6 +386,7 @@ std::vector<Instruction> decompose(const std::string& command) {
       w.push_back(ws[k]);
       comma.push_back(k == 0 && pending_comma);
     }
+    lexicon::correct_typos(w);
     std::string previous;
     for (const auto& c : clauses(w, comma)) {
       Instruction in = classify(c);
@@ -308,10 +397,11 @@ std::vector<Instruction> decompose(const std::string& command) {
         in.target.clear();
       }
       previous = in.kind;
-      if (in.kind == "add" && std::find(add_verbs().begin(), add_verbs().end(), c.front()) != add_verbs().end()) {
+      if (in.kind == "add") {
         std::vector<Words> parts;
         for (const auto& part : split_additions(text::words(in.text)))
           for (const auto& p : split_chase(part)) parts.push_back(p);
+        share_trailing_words(parts);
         if (parts.size() > 1) {
           for (const auto& p : parts) {
             Instruction part = in;

@@ -25,10 +25,11 @@ std::string strip_reference(const std::string& text, const std::string& referenc
   return text::join(w);
 }
 
-json anchor_json(const AddedVehicle& a) {
-  const auto& p0 = a.trajectory.front();
-  return {{"id", a.id}, {"x", p0["x"]}, {"y", p0["y"]}, {"yaw", p0["yaw"]}, {"size_lwh", a.asset["size_lwh"]},
-          {"speed_mps", a.speed_mps}, {"wrong_way", a.resolved.value("wrong_way", false)}};
+// Values the motion agent found out of range refuse the instruction, each with its reason.
+bool refused_for_range(Conversation& c, const std::string& text, const json& intent) {
+  if (!intent.contains("problems")) return false;
+  for (const auto& p : intent["problems"]) c.unresolved.push_back({{"instruction", text}, {"reason", p}});
+  return true;
 }
 
 }  // namespace
@@ -119,6 +120,10 @@ void Manager::run_instruction(Conversation& c, const Instruction& in, Round& rou
   else if (in.kind == "revise") do_revise(c, in, round);
   else if (in.kind == "remove_added") do_remove_added(c, in, round);
   else if (in.kind == "traffic_jam" || in.kind == "busy_road" || in.kind == "construction_zone") do_abstract(c, in, round);
+  else if (!in.target.empty())  // decompose named what cannot be added
+    c.unresolved.push_back({{"instruction", in.text},
+                            {"reason", "a " + in.target + " is not something that can be added to a road scene "
+                                       "(vehicles, cones and barriers can)"}});
   else
     c.unresolved.push_back({{"instruction", in.text},
                             {"reason", "not understood as an edit (add, delete, put back or revise a vehicle, or move "
@@ -140,6 +145,17 @@ void Manager::do_view(Conversation& c, const Instruction& in, Round& round) {
 }
 
 void Manager::do_delete(Conversation& c, const Instruction& in, Round& round) {
+  // A brand (recorded objects carry none) or an order word, with vehicles added: the user speaks
+  // of what was added ("remove the Porsche", "delete the first van", "remove the last one").
+  if (!c.added.empty()) {
+    const auto w = text::words(in.text);
+    const std::string ref = reference_in(in.text);
+    const bool named = !lexicon::find_brands(w).empty() || text::has_any(w, {"first", "second", "third", "last"});
+    if (named && ref != "it" && !resolve(c, ref).empty()) {
+      do_remove_added(c, {"remove_added", in.text, ref, 1}, round);
+      return;
+    }
+  }
   const auto out = call("deletion", c, "select", {{"instruction", in.text}, {"removed", c.removed}});
   if (!out.ok) throw std::runtime_error("deletion agent: " + out.message);
   const auto ids = out.result["ids"].get<std::vector<std::string>>();
@@ -215,14 +231,14 @@ bool Manager::add_one(Conversation& c, const json& asset_args, const json& motio
   json args{{"intent", motion_said}, {"size_lwh", choice["size_lwh"]}, {"type", choice["type"]},
             {"removed", c.removed}, {"others", others_json(c, -1)}, {"strict", strict}};
   if (motion_said.contains("relative")) {
-    const auto ref = resolve(c, motion_said["relative"].value("to", "it"));
-    if (ref.empty()) {
-      c.unresolved.push_back({{"instruction", text}, {"reason", "no added vehicle matches '" +
+    const auto anchor = find_anchor(c, motion_said["relative"].value("to", "it"), -1);
+    if (!anchor) {
+      c.unresolved.push_back({{"instruction", text}, {"reason", "no vehicle, added or recorded, matches '" +
                                                                    motion_said["relative"].value("to", "") +
                                                                    "' to place it relative to"}});
       return false;
     }
-    args["anchor"] = anchor_json(c.added[size_t(ref.front())]);
+    args["anchor"] = *anchor;
   }
   AddedVehicle v;
   v.id = "added_" + std::to_string(c.next_id);
@@ -257,6 +273,7 @@ void Manager::do_add(Conversation& c, const Instruction& in, Round& round) {
   }
   const auto decided = call("motion", c, "decide", {{"instruction", in.text}});
   if (!decided.ok) throw std::runtime_error("motion agent: " + decided.message);
+  if (refused_for_range(c, in.text, decided.result["intent"])) return;
   json args = asset_args;
   args["request"] = probe.result["request"];
   for (int k = 0; k < count; ++k)
@@ -264,6 +281,12 @@ void Manager::do_add(Conversation& c, const Instruction& in, Round& round) {
 }
 
 void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
+  // "turn it 5 degrees left" with nothing added: "it" is the view.
+  if (c.added.empty() && in.target == "it" &&
+      !text::quantities(text::words(in.text), {"meters", "meter", "m", "degrees", "degree", "cm"}).empty()) {
+    do_view(c, in, round);
+    return;
+  }
   const auto targets = resolve(c, in.target);
   if (targets.empty()) {
     c.unresolved.push_back({{"instruction", in.text},
@@ -275,6 +298,7 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
   const std::string rest = strip_reference(in.text, in.target);
   const auto decided = call("motion", c, "decide", {{"instruction", rest}});
   if (!decided.ok) throw std::runtime_error("motion agent: " + decided.message);
+  if (refused_for_range(c, in.text, decided.result["intent"])) return;
   json said = decided.result["intent"];
   bool changed_any = false;
   for (int t : targets) {
@@ -293,18 +317,26 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
       continue;
     }
     json keep = said;
+    // "make it follow the grey car": it keeps its start and follows; only "put it behind the grey
+    // car" moves it.
+    const bool follow_only = said.contains("relative") && said.value("chase", false);
+    if (follow_only) keep.erase("relative");
+    if (said.contains("distance_change_m")) {  // "10 m further away"
+      keep["distance_m"] = std::max(0.0, v.resolved.value("distance_m", 0.0) + said["distance_change_m"].get<double>());
+      keep.erase("distance_change_m");
+      keep.erase("relative");
+    }
     // Same place unless told otherwise: a revision of how it moves keeps where it starts.
-    if (!said.contains("placement") && !said.contains("relative") && !said.contains("distance_m") &&
+    if (!keep.contains("placement") && !keep.contains("relative") && !keep.contains("distance_m") &&
         !v.intent.contains("relative") && v.resolved.contains("distance_m"))
       keep["distance_m"] = v.resolved["distance_m"];
     json args{{"base_intent", v.intent}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},
               {"type", v.asset["type"]}, {"removed", c.removed}, {"others", others_json(c, t)}};
     json merged_rel = said.contains("relative") ? said["relative"] : (said.contains("placement") ? json() : v.intent.value("relative", json()));
     if (!merged_rel.is_null()) {
-      auto ref = resolve(c, merged_rel.value("to", "it"));
-      ref.erase(std::remove(ref.begin(), ref.end(), t), ref.end());
-      if (!ref.empty()) {
-        args["anchor"] = anchor_json(c.added[size_t(ref.front())]);
+      if (const auto anchor = find_anchor(c, merged_rel.value("to", "it"), t)) {
+        args["anchor"] = *anchor;
+        if (follow_only) args["base_intent"].erase("relative");
       } else {
         // The anchor is gone: keep the vehicle where it starts now.
         args["base_intent"].erase("relative");
@@ -344,18 +376,30 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
     if (add_one(c, asset_args, intent, in.text + " (" + what + ")", round, true)) ++placed;
     else c.unresolved.erase(c.unresolved.end() - 1);  // one vehicle fewer is not a failure of the request
   };
+  // What the user said about where and how ("coming the other way", "in the right lane") holds
+  // for every vehicle of the scene.
+  const auto decided = call("motion", c, "decide", {{"instruction", in.text}});
+  json said = decided.ok ? decided.result["intent"] : json::object();
+  // "traffic coming the other way": oncoming traffic comes toward the ego.
+  if (said.value("lane", "") == "oncoming" && !said.contains("direction")) said["direction"] = "toward";
+  const auto with_said = [&](json intent) {
+    for (const char* key : {"lane", "direction", "wrong_way", "placement"})
+      if (said.contains(key)) intent[key] = said[key];
+    return intent;
+  };
   if (in.kind == "traffic_jam") {
     for (int k = 0; k < 8; ++k)
-      add(std::string(colors[k]) + " " + kinds[k], {{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}});
+      add(std::string(colors[k]) + " " + kinds[k], with_said({{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}}));
   } else if (in.kind == "busy_road") {
     static const char* where[] = {"front", "left_front", "back", "front", "left_front", "back", "front", "left_front", "front", "back"};
     for (int k = 0; k < 10; ++k)
       add(std::string(colors[k]) + " " + kinds[k],
-          {{"placement", where[k]}, {"direction", k % 2 ? "toward" : "away"}, {"action", "straight"}});
+          with_said({{"placement", where[k]}, {"direction", k % 2 ? "toward" : "away"}, {"action", "straight"}}));
   } else {
+    const double first = said.value("distance_m", 14.0);
     for (int k = 0; k < 6; ++k)
       add(k < 4 ? "traffic cone" : "road barrier",
-          {{"placement", "front"}, {"distance_m", 14.0 + 3.0 * k}, {"action", "static"}});
+          with_said({{"placement", "front"}, {"distance_m", first + 3.0 * k}, {"action", "static"}}));
   }
   if (placed == 0)
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "no free place on the lanes for any vehicle"}});
@@ -364,48 +408,6 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
                       " vehicles; the rest had no free place");
 }
 
-std::vector<int> Manager::resolve(const Conversation& c, const std::string& reference) const {
-  std::vector<int> out;
-  const int n = int(c.added.size());
-  if (n == 0) return out;
-  for (int i = 0; i < n; ++i)
-    if (c.added[size_t(i)].id == reference) return {i};
-  const auto w = text::words(reference);
-  if (reference == "both" || text::has_phrase(w, "both")) {
-    if (c.last_group.size() >= 2) return c.last_group;
-    for (int i = std::max(0, n - 2); i < n; ++i) out.push_back(i);
-    return out;
-  }
-  if (reference == "them" || text::has_any(w, {"them", "they", "all added", "all the added"})) {
-    if (!c.last_group.empty()) return c.last_group;
-    for (int i = 0; i < n; ++i) out.push_back(i);
-    return out;
-  }
-  const auto brands = lexicon::find_brands(w);
-  const auto types = lexicon::find_types(w);
-  const auto colors = lexicon::find_colors(w);
-  static const char* ordinals[] = {"first", "second", "third", "fourth", "fifth"};
-  for (int k = 0; k < 5; ++k)
-    if (text::has_phrase(w, ordinals[k]) && k < n) return {k};
-  if (text::has_phrase(w, "last")) return {n - 1};
-  const bool typed = !types.empty() && types.front().type.type != "car" && types.front().type.type != "object";
-  if (brands.empty() && !typed && colors.empty()) {
-    // "it", "the added car", "the new one": the one spoken about last.
-    return {c.last_ref >= 0 && c.last_ref < n ? c.last_ref : n - 1};
-  }
-  // The most recent added vehicle that has every named brand, type and colour.
-  for (int i = n - 1; i >= 0; --i) {
-    const auto& a = c.added[size_t(i)].asset;
-    const auto bw = a.value("brand_words", std::vector<std::string>{});
-    if (!brands.empty() && std::find(bw.begin(), bw.end(), brands.front().brand) == bw.end()) continue;
-    if (typed && a.value("type", "") != types.front().type.type) continue;
-    if (!colors.empty() &&
-        lexicon::color_class(a.value("color_rgb", std::array<int, 3>{0, 0, 0})) != lexicon::color_class(colors.front().rgb))
-      continue;
-    return {i};
-  }
-  return out;
-}
 
 json Manager::edit_state(const Conversation& c) const {
   const auto scene = cached_scene(c.scene_dir);

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,8 @@ struct Conversation {
   int next_id = 1;
   int last_ref = -1;           // the vehicle "it" means
   std::vector<int> last_group; // the vehicles "them"/"both" mean
+  // Recorded vehicles something was placed relative to, by id: later rounds find the same one.
+  std::map<std::string, nlohmann::json> recorded_anchors;
 };
 
 struct ChatResult {
@@ -80,6 +83,9 @@ class Manager {
   bool add_one(Conversation& c, const nlohmann::json& asset_args, const nlohmann::json& motion_args,
                const std::string& text, Round& round, bool strict = false);
   std::vector<int> resolve(const Conversation& c, const std::string& reference) const;
+  // The start of the vehicle a placement is relative to: an added one (not `except`), else a
+  // recorded one the deletion agent selects by the same words; nullopt when none matches.
+  std::optional<nlohmann::json> find_anchor(Conversation& c, const std::string& reference, int except);
   nlohmann::json others_json(const Conversation& c, int except) const;
   nlohmann::json edit_state(const Conversation& c) const;
   AgentOutcome call(const std::string& kind, const Conversation& c, const std::string& action, nlohmann::json args);

@@ -17,6 +17,12 @@ void MotionIntent::merge(const MotionIntent& o) {
   if (o.distance_word) distance_word = o.distance_word;
   if (o.lane) lane = o.lane;
   if (o.action) action = o.action;
+  // Told to move ("drive away"): it no longer stands, whatever the base said.
+  if (!o.action && !o.speed && (o.direction || o.speed_mps) && action == "static") {
+    action.reset();
+    if (speed == "static") speed.reset();
+  }
+  if (o.action && *o.action != "static" && speed == "static") speed.reset();
   if (o.speed) {
     // "faster"/"slower" step from the current speed.
     const std::string cur = speed.value_or(action == "static" ? "static" : "normal");
@@ -50,6 +56,8 @@ nlohmann::json to_json(const MotionIntent& m) {
   if (m.direction) j["direction"] = *m.direction;
   if (m.wrong_way) j["wrong_way"] = *m.wrong_way;
   if (m.chase) j["chase"] = *m.chase;
+  if (m.distance_change_m) j["distance_change_m"] = *m.distance_change_m;
+  if (!m.problems.empty()) j["problems"] = m.problems;
   return j;
 }
 
@@ -68,6 +76,8 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   if (j.contains("direction")) m.direction = j["direction"].get<std::string>();
   if (j.contains("wrong_way")) m.wrong_way = j["wrong_way"].get<bool>();
   if (j.contains("chase")) m.chase = j["chase"].get<bool>();
+  if (j.contains("distance_change_m")) m.distance_change_m = j["distance_change_m"].get<double>();
+  if (j.contains("problems")) m.problems = j["problems"].get<std::vector<std::string>>();
   return m;
 }
 

@@ -4,6 +4,7 @@
 // and completed with defaults when planned.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -17,9 +18,10 @@ struct RelativePlacement {
 struct MotionIntent {
   std::optional<std::string> placement;   // front, left_front, right_front, left, right, back
   std::optional<double> distance_m;
+  std::optional<double> distance_change_m;  // "10 m further away": added to the distance it has (revisions)
   std::optional<std::string> distance_word;  // close, far
   std::optional<std::string> lane;        // ego, left, right, oncoming, parking
-  std::optional<RelativePlacement> relative;
+  std::optional<RelativePlacement> relative;  // region front, back, left, right, or at (its place)
   std::optional<std::string> action;      // straight, turn_left, turn_right, lane_change_left,
                                           // lane_change_right, backward, static, cut_in
   std::optional<std::string> speed;       // slow, normal, fast, faster, slower
@@ -27,6 +29,9 @@ struct MotionIntent {
   std::optional<std::string> direction;   // toward, away
   std::optional<bool> wrong_way;
   std::optional<bool> chase;              // "chasing", "following": match the target's speed
+  // Values said but outside what can be planned ("-5 m ahead", "900 km/h"), each with why;
+  // the instruction is refused with these reasons instead of breaking the schema.
+  std::vector<std::string> problems;
 
   // Fields set in `over` replace ours (a revision).
   void merge(const MotionIntent& over);

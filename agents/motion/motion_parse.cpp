@@ -1,6 +1,8 @@
 // The offline interpreter's motion part: placement, relative placement, lane, action, speed,
 // direction. Phrases are matched on normalised words; the first match of a kind wins.
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "agents/language/text.hpp"
 #include "agents/motion/motion_intent.hpp"
@@ -27,6 +29,7 @@ std::optional<RelativePlacement> find_relative(Words& w) {
       {"following behind", "back", true}, {"behind", "back", false},       {"chasing after", "back", true},
       {"chasing", "back", true},       {"following", "back", true},         {"chases", "back", true},
       {"follows", "back", true},       {"tailing", "back", true},           {"after", "back", false},
+      {"chase", "back", true},         {"follow", "back", true},
       {"to the left of", "left", false}, {"left of", "left", false},        {"to the right of", "right", false},
       {"right of", "right", false},    {"next to", "left", false},          {"beside", "left", false}};
   for (const auto& p : patterns) {
@@ -43,7 +46,9 @@ std::optional<RelativePlacement> find_relative(Words& w) {
         if (stop && end > after) break;
       }
       std::string ref = text::join(w, after, end);
-      if (ref.empty() || ref == "the" || ref == "traffic" || ref == "the traffic" || ref == "the road") continue;
+      if (ref.empty() || ref == "the" || ref == "traffic" || ref == "the traffic" || ref == "the road" ||
+          ref == "the other" || ref == "each other" || ref == "one another" || ref == "the other one")
+        continue;
       if (ref.rfind("the ", 0) != 0 && ref != "it" && ref != "them" && ref != "him" && ref != "her" &&
           ref.rfind("that ", 0) != 0 && ref.rfind("this ", 0) != 0)
         continue;
@@ -52,6 +57,29 @@ std::optional<RelativePlacement> find_relative(Words& w) {
       if (p.chase) r.region = "back";
       return r;
     }
+  }
+  return std::nullopt;
+}
+
+// "in its place", "where the truck was", "instead of the bus": at the start of a vehicle that
+// was (or is being) removed; "removed" stands for the last one removed.
+std::optional<RelativePlacement> find_place_of(Words& w) {
+  for (const char* p : {"in its place", "in their place", "where it was", "where they were", "in the same place",
+                        "there instead", "in the same spot", "in its spot", "where it used to be"}) {
+    const size_t at = find_phrase(w, p);
+    if (at == std::string::npos) continue;
+    for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
+    return RelativePlacement{"removed", "at"};
+  }
+  for (const char* p : {"where the", "in place of the", "instead of the"}) {
+    const size_t at = find_phrase(w, p);
+    if (at == std::string::npos) continue;
+    const size_t from = at + text::words(p).size() - 1;  // keep "the"
+    size_t end = from + 1;
+    while (end < w.size() && w[end] != "was" && w[end] != "were" && w[end] != "and" && w[end] != "with" && end < from + 5) ++end;
+    RelativePlacement r{text::join(w, from, end), "at"};
+    for (size_t k = at; k < std::min(w.size(), end + 1); ++k) w[k] = "_";
+    return r;
   }
   return std::nullopt;
 }
@@ -77,15 +105,53 @@ std::optional<std::string> find_placement(const Words& w, bool has_ahead_distanc
   return std::nullopt;
 }
 
-std::optional<std::string> find_lane(const Words& w) {
+std::optional<std::string> find_lane(const Words& w_in) {
+  // "the wrong side of the road" is how it drives (wrong_way), not the roadside.
+  Words w = w_in;
+  for (const char* p : {"wrong side of the road", "wrong side", "wrong way"})
+    for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p))
+      for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
   if (has_any(w, {"my lane", "our lane", "same lane", "ego lane", "this lane", "current lane"})) return "ego";
   if (has_any(w, {"oncoming lane", "opposite lane", "other side of the road", "opposing lane", "oncoming traffic lane",
-                  "lane of oncoming"}))
+                  "lane of oncoming", "other side", "opposite side", "other carriageway", "opposite carriageway",
+                  "the other way", "opposite direction", "other direction"}))
     return "oncoming";
+  // "turns right into the side street": where it goes, not where it starts.
+  for (const char* p : {"into the side street", "into a side street", "into the side road", "into the cross street",
+                        "onto the side street", "onto the cross street", "down the side street", "into the street"})
+    for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p))
+      for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
+  if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane"}))
+    return "cross";
   if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot"}))
     return "parking";
   if (has_any(w, {"left lane", "lane to my left", "lane on the left", "lane to the left", "adjacent lane"})) return "left";
   if (has_any(w, {"right lane", "lane to my right", "lane on the right", "lane to the right"})) return "right";
+  return std::nullopt;
+}
+
+// "changing into the right lane", "moves over to the left lane": a lane change whose target is
+// named. The lane words then say where it goes, not where it starts, so they are blanked.
+std::optional<std::string> lane_change_to(Words& w) {
+  static const char* verbs[] = {"change", "changes", "changing", "switch", "switches", "switching", "moves",
+                                "moving", "pull", "pulls", "pulling", "merge", "merges", "merging", "swerve",
+                                "swerves", "swerving", "cut", "cuts", "cutting"};
+  static const char* links[] = {"into", "to", "onto", "over", "the", "lanes", "lane", "across"};
+  for (size_t i = 0; i < w.size(); ++i) {
+    if (std::find(std::begin(verbs), std::end(verbs), w[i]) == std::end(verbs)) continue;
+    for (size_t j = i + 1; j + 1 < w.size() && j <= i + 5; ++j) {
+      if ((w[j] == "left" || w[j] == "right") && w[j + 1] == "lane") {
+        const std::string side = w[j];
+        w[j] = w[j + 1] = "_";
+        return "lane_change_" + side;
+      }
+      if ((w[j] == "my" || w[j] == "our") && w[j + 1] == "lane") {
+        w[j] = w[j + 1] = "_";
+        return std::string("lane_change_ego");
+      }
+      if (std::find(std::begin(links), std::end(links), w[j]) == std::end(links)) break;
+    }
+  }
   return std::nullopt;
 }
 
@@ -118,10 +184,13 @@ std::optional<std::string> find_action(const Words& w) {
     return "backward";
   if (has_any(w, {"parked", "park", "parks", "parking", "stopped", "stationary", "static", "standing still",
                   "not moving", "idle", "stalled", "broken down", "standing", "still", "motionless", "stops",
-                  "stop"}))
+                  "stop", "waiting", "waits", "queuing", "queueing"}))
     return "static";
   if (has_any(w, {"straight", "moving ahead", "driving ahead", "drive ahead", "drives ahead", "going ahead",
-                  "keeps going", "moving forward", "driving forward", "drives forward", "goes ahead"}))
+                  "keeps going", "moving forward", "driving forward", "drives forward", "goes ahead", "drive forward",
+                  "go forward", "move forward", "drive off", "drives off", "drive away", "drives away", "pull out",
+                  "pulls out", "set off", "sets off", "move off", "moves off", "start moving", "start driving",
+                  "get going", "pull away", "pulls away"}))
     return "straight";
   return std::nullopt;
 }
@@ -152,21 +221,49 @@ void find_speed(const Words& w, MotionIntent& m) {
 
 }  // namespace
 
+// The motion schema's ranges (agents/prompts/motion.schema.json).
+constexpr double kMaxDistanceM = 500;
+constexpr double kMaxSpeedMps = 80;
+
 MotionIntent parse_motion(const std::string& instruction) {
   Words w = text::words(instruction);
   MotionIntent m;
-  m.relative = find_relative(w);
-  if (m.relative && has_any(text::words(instruction), {"chasing", "chase", "chases", "following", "follows", "tailing", "pursuing"}))
+  m.relative = find_place_of(w);
+  if (!m.relative) m.relative = find_relative(w);
+  if (m.relative && has_any(text::words(instruction), {"chasing", "chase", "chases", "following", "follows", "follow",
+                                                       "tailing", "pursuing"}))
     m.chase = true;
   bool ahead_distance = false;
-  for (const auto& q : text::quantities(w, {"meters", "meter", "m", "feet", "foot", "ft", "yards", "yard"})) {
+  for (const auto& q : text::quantities(w, {"meters", "meter", "m", "feet", "foot", "ft", "yards", "yard", "km",
+                                            "kilometers", "kilometer", "miles", "mile"})) {
+    // "50 kilometers per hour" is a speed (find_speed), not a distance.
+    if (q.end < w.size() && (w[q.end] == "per" || w[q.end] == "an" || w[q.end] == "a")) continue;
     const std::string unit = w[q.end - 1];
-    const double f = (unit == "feet" || unit == "foot" || unit == "ft") ? 0.3048 : (unit == "yards" || unit == "yard") ? 0.9144 : 1.0;
+    const double f = (unit == "feet" || unit == "foot" || unit == "ft")      ? 0.3048
+                     : (unit == "yards" || unit == "yard")                  ? 0.9144
+                     : (unit == "km" || unit == "kilometers" || unit == "kilometer") ? 1000.0
+                     : (unit == "miles" || unit == "mile")                  ? 1609.344
+                                                                            : 1.0;
     m.distance_m = q.value * f;
+    // "10 m further away", "5 m closer": a change of the distance it has, not a new one.
+    const size_t after = q.end;
+    if (after < w.size() && (w[after] == "further" || w[after] == "farther" || w[after] == "closer" ||
+                             w[after] == "nearer")) {
+      m.distance_change_m = (w[after] == "closer" || w[after] == "nearer") ? -*m.distance_m : *m.distance_m;
+      m.distance_m.reset();
+      break;
+    }
+    if (*m.distance_m < 0 || *m.distance_m > kMaxDistanceM) {
+      m.problems.push_back(text::join(w, q.begin, q.end) + (*m.distance_m < 0 ? " is behind the camera" : " is farther than the " +
+                           std::to_string(int(kMaxDistanceM)) + " m a scene's lanes are planned over") +
+                           ": say a distance from 0 to " + std::to_string(int(kMaxDistanceM)) + " m");
+      m.distance_m.reset();
+    }
     ahead_distance = q.end < w.size() && (w[q.end] == "ahead" || w[q.end] == "in" || w[q.end] == "forward" ||
                                           w[q.end] == "away" || w[q.end] == "down");
     break;
   }
+  const auto change_to = lane_change_to(w);
   m.lane = find_lane(w);
   // Lane words must not also count as a side placement ("in the left lane" is not "on my left").
   Words without_lane = w;
@@ -188,18 +285,42 @@ MotionIntent parse_motion(const std::string& instruction) {
     m.distance_word = "close";
   else if (has_any(w, {"far ahead", "far away", "in the distance", "far", "distant"}))
     m.distance_word = "far";
-  m.action = find_action(w);
+  m.action = change_to ? change_to : find_action(w);
+  // Out of a side street onto the road: which way it turns is the road's to say (the planner's).
+  if (m.lane == "cross" && m.action != "static" &&
+      has_any(w, {"coming out of", "pulling out of", "emerging from", "coming from", "out of the", "turning out of",
+                  "joining from", "onto our road", "onto the road", "onto the main road", "join the road"}))
+    m.action = "join";
   find_speed(w, m);
-  if (has_any(w, {"toward me", "toward us", "toward the camera", "toward the ego", "coming at me", "coming at us",
-                  "oncoming", "approaching", "head-on", "head on", "in my direction", "coming toward", "heading toward",
-                  "driving toward", "comes toward", "toward"}))
-    m.direction = "toward";
-  else if (has_any(w, {"away from me", "away from us", "driving away", "moving away", "away", "leaving"}))
+  // Overtaking goes the ego's way, faster than it.
+  if (has_any(w, {"overtake", "overtakes", "overtaking", "passing me", "passes me", "pass me", "passing us"})) {
     m.direction = "away";
+    if (!m.speed && !m.speed_mps) m.speed = "fast";
+  }
+  // Moving words after "parked": it leaves (a revision "pull out and drive away" ends the parking).
+  if (m.action == "static" && has_any(w, {"pull out", "pulls out", "pulling out", "drive off", "drives off",
+                                          "drive away", "drives away", "driving away", "leave", "leaves", "set off"}))
+    m.action = "straight";
+  if (!m.direction && has_any(w, {"toward me", "toward us", "toward the camera", "toward the ego", "coming at me", "coming at us",
+                  "oncoming", "approaching", "head-on", "head on", "in my direction", "coming toward", "heading toward",
+                  "driving toward", "comes toward", "toward the ego", "racing toward", "rushing toward", "speeding toward",
+                  "heading at me", "toward my car"}))
+    m.direction = "toward";
+  else if (!m.direction && has_any(w, {"away from me", "away from us", "driving away", "moving away", "away", "leaving"}))
+    m.direction = "away";
+  // On the other side of the road, unless told otherwise, it comes toward the ego.
+  if (m.lane == "oncoming" && !m.direction && has_any(w, {"coming", "comes", "driving", "drives", "heading"}))
+    m.direction = "toward";
   if (has_any(w, {"wrong way", "wrong direction", "against traffic", "against the traffic", "against the flow",
                   "ghost driver", "wrong side", "contraflow", "against the direction"}))
     m.wrong_way = true;
   if (m.action == "static") m.speed = "static";
+  if (m.speed_mps && (*m.speed_mps < 0 || *m.speed_mps > kMaxSpeedMps)) {
+    m.problems.push_back("a speed of " + std::to_string(int(std::lround(*m.speed_mps * 3.6))) +
+                         " km/h is outside what a road vehicle can drive here (0 to " +
+                         std::to_string(int(kMaxSpeedMps * 3.6)) + " km/h)");
+    m.speed_mps.reset();
+  }
   return m;
 }
 

@@ -79,10 +79,19 @@ void append_hermite(Path& path, const Eigen::Vector2d& to, double to_yaw, double
   }
 }
 
+// How far from a lane's centreline a side street may start and still be turned into from it:
+// across two more lanes and a parking lane.
+constexpr double kJunctionReachM = 12.0;
+
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length) {
   const double travel_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
   const double radius = 9.0;
-  for (const auto& c : map.crossings(lane)) {
+  // Crossing streets, then side streets that meet this lane (T junctions), nearest first.
+  auto meets = map.crossings(lane);
+  for (const auto& j : map.junctions(lane, kJunctionReachM)) meets.push_back(j);
+  std::stable_sort(meets.begin(), meets.end(),
+                   [&](const scene::LaneCrossing& a, const scene::LaneCrossing& b) { return dir * a.s_self < dir * b.s_self; });
+  for (const auto& c : meets) {
     const double ahead = dir * (c.s_self - s0);
     if (ahead < radius + 1) continue;  // too close to turn smoothly
     const auto& other = map.lanes()[size_t(c.other)];
@@ -96,7 +105,9 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
     if (exit_s < 0 || exit_s > other.length()) continue;
     TurnPlan plan;
     plan.path = lane_path(map, lane, s0, dir, ahead - radius);
+    const size_t before = plan.path.points.size();
     append_hermite(plan.path, map.point_at(c.other, exit_s), other_yaw);
+    plan.connector.assign(plan.path.points.begin() + long(before), plan.path.points.end());
     const Path rest = lane_path(map, c.other, exit_s, other_dir, std::max(0.0, length - plan.path.length()));
     for (const auto& p : rest.points) plan.path.push(p);
     plan.target_lane = other.id;

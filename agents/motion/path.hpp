@@ -36,6 +36,9 @@ void append_hermite(Path& path, const Eigen::Vector2d& to, double to_yaw, double
 struct TurnPlan {
   Path path;
   std::string target_lane;
+  // The curve joining the two lanes: at a junction the map may leave it unmapped (lanes end at
+  // the kerb), but the turn drives there.
+  std::vector<Eigen::Vector2d> connector;
 };
 // Along the lane from s0 in direction dir, the next crossing with a lane whose legal travel
 // turns left (sign +1) or right (sign -1) by roughly 90 degrees; the path turns onto it.

@@ -19,6 +19,9 @@ struct Obstacle {
   std::string id;
   Eigen::Vector3d size_lwh;
   std::vector<std::optional<Pose2>> poses;
+  // A pedestrian: crossing its recorded path is said in a note, not a reason to refuse (a person
+  // steps round a parked car; the recording cannot show it).
+  bool pedestrian = false;
 };
 
 // Where a vehicle added earlier starts, for "in front of the added car".

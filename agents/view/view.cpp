@@ -55,7 +55,11 @@ ViewChange parse_view(const std::string& instruction) {
     const double f = (unit == "feet" || unit == "foot" || unit == "ft") ? 0.3048 : (unit == "centimeters" || unit == "cm") ? 0.01 : 1.0;
     std::optional<std::pair<int, double>> dir;
     const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : w.size();
-    for (size_t i = q.end; i < std::min(next_start, q.end + 4) && !dir; ++i) dir = direction_word(w[i]);
+    for (size_t i = q.end; i < std::min(next_start, q.end + 4) && !dir; ++i) {
+      // "further back": "further" only strengthens the direction word after it.
+      if ((w[i] == "further" || w[i] == "farther") && i + 1 < w.size() && direction_word(w[i + 1])) continue;
+      dir = direction_word(w[i]);
+    }
     const size_t prev_end = k > 0 ? distances[k - 1].end : 0;
     for (size_t i = q.begin; i-- > prev_end && q.begin - i <= 5 && !dir;) dir = direction_word(w[i]);
     if (!dir) continue;

@@ -63,6 +63,10 @@ class LaneMap {
   double travel_yaw_at(int lane, double s) const;
   // Where other lanes' centrelines cross this lane's, in order along it.
   std::vector<LaneCrossing> crossings(int lane) const;
+  // Where other lanes meet this one without crossing it (a side street's T junction): a lane
+  // whose legal travel starts within `reach` of this lane's centreline, or this lane's travel
+  // ending within `reach` of another lane. s_other is where the other lane is joined.
+  std::vector<LaneCrossing> junctions(int lane, double reach) const;
 
  private:
   // p's position on lane i when p lies on it (within half its width plus margin, inside its extent).

@@ -34,9 +34,10 @@ struct Case {
   std::string id, category;
   std::vector<std::string> rounds;
   json expect;
+  std::string scene;  // the case's own scene (optional 'scene' field, relative to the cases file), or --scene
 };
 
-std::vector<Case> load_cases(const std::string& file) {
+std::vector<Case> load_cases(const std::string& file, const std::string& default_scene) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file + ": cannot open the cases file");
   std::vector<Case> out;
@@ -53,9 +54,114 @@ std::vector<Case> load_cases(const std::string& file) {
     for (const char* field : {"id", "category", "rounds", "expect"})
       if (!j.contains(field)) throw std::runtime_error(where + ": missing field '" + field + "'");
     if (!j["rounds"].is_array() || j["rounds"].empty()) throw std::runtime_error(where + ": 'rounds' must be a non-empty list");
-    out.push_back({j["id"], j["category"], j["rounds"].get<std::vector<std::string>>(), j["expect"]});
+    std::string scene = default_scene;
+    if (j.contains("scene")) {
+      if (!j["scene"].is_string()) throw std::runtime_error(where + ": 'scene' must be a path (relative to the cases file)");
+      scene = (std::filesystem::path(file).parent_path() / j["scene"].get<std::string>()).lexically_normal().string();
+    }
+    if (scene.empty())
+      throw std::runtime_error(where + ": the case names no 'scene' and no --scene was given; pass --scene DIR");
+    out.push_back({j["id"], j["category"], j["rounds"].get<std::vector<std::string>>(), j["expect"], scene});
   }
   return out;
+}
+
+// Tallies of one evaluation, per category and per scene.
+struct Tally {
+  std::map<std::string, std::pair<int, int>> by_category, by_scene;  // passed, total
+  std::map<std::string, std::pair<double, int>> latency_by_category;  // total ms, rounds
+  json failures = json::array();
+  double total_ms = 0;
+  int rounds = 0, passed = 0;
+  bench::MotionQuality motion;
+};
+
+// Sends one case's rounds through the manager and grades the final edit state.
+void run_case(agents::manager::Manager& manager, const scene::Scene& scene, const Case& c, bool verbose, Tally& t) {
+  json state;
+  std::string error_text;
+  for (const auto& r : c.rounds) {
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      state = manager.chat(c.id, c.scene, r).edit_state;
+    } catch (const std::exception& e) {
+      error_text = std::string("round failed: ") + e.what();
+    }
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    t.total_ms += ms;
+    ++t.rounds;
+    t.latency_by_category[c.category].first += ms;
+    t.latency_by_category[c.category].second++;
+    if (!error_text.empty()) break;
+  }
+  manager.reset(c.id);
+  const bool error = !error_text.empty();
+  json case_fail = json::array();
+  if (error) case_fail.push_back({{"check", "run"}, {"detail", error_text}});
+  else
+    for (const auto& r : bench::grade_case(scene, state, c.expect))
+      if (!r.pass) case_fail.push_back({{"check", json::parse(r.check)}, {"detail", r.detail}});
+  if (!error) {
+    const auto q = bench::motion_quality(scene, state);
+    t.motion.vehicles += q.vehicles;
+    t.motion.on_lane += q.on_lane;
+    t.motion.action_match += q.action_match;
+    t.motion.speed_match += q.speed_match;
+    t.motion.no_overlap += q.no_overlap;
+  }
+  const bool ok = case_fail.empty();
+  const json unresolved = state.is_object() ? state.value("unresolved", json::array()) : json::array();
+  for (auto* tally : {&t.by_category[c.category], &t.by_scene[scene.name]}) {
+    tally->second++;
+    tally->first += ok;
+  }
+  t.passed += ok;
+  if (!ok)  // what the system said it could not do explains most failures
+    t.failures.push_back({{"id", c.id}, {"scene", scene.name}, {"rounds", c.rounds}, {"failed", case_fail},
+                          {"unresolved", unresolved}});
+  if (verbose)
+    std::cerr << (ok ? "pass " : "FAIL ") << c.id
+              << (ok ? "" : "  " + case_fail.dump() + "  unresolved: " + unresolved.dump()) << "\n";
+}
+
+double share(int k, int n) { return n ? double(k) / n : 1.0; }
+
+json make_report(const EvalArgs& a, const std::string& backend, size_t cases, const std::vector<std::string>& scenes,
+                 const Tally& t) {
+  json cats = json::object(), by_scene = json::object();
+  for (const auto& [name, pt] : t.by_category) {
+    const auto& lat = t.latency_by_category.at(name);
+    cats[name] = {{"passed", pt.first}, {"total", pt.second}, {"accuracy", double(pt.first) / pt.second},
+                  {"mean_decision_latency_ms", lat.first / lat.second}};
+  }
+  for (const auto& [name, pt] : t.by_scene)
+    by_scene[name] = {{"passed", pt.first}, {"total", pt.second}, {"accuracy", double(pt.first) / pt.second}};
+  return json{{"cases_file", a.cases},
+              {"scene", scenes.size() == 1 ? json(scenes.front()) : json(scenes)},
+              {"backend", backend},
+              {"cases", cases},
+              {"passed", t.passed},
+              {"accuracy", share(t.passed, int(cases))},
+              {"by_category", cats},
+              {"by_scene", by_scene},
+              {"by_backend", {{backend, share(t.passed, int(cases))}}},
+              {"mean_decision_latency_ms", t.rounds ? t.total_ms / t.rounds : 0.0},
+              {"motion", {{"vehicles", t.motion.vehicles}, {"on_lane", share(t.motion.on_lane, t.motion.vehicles)},
+                          {"action_match", share(t.motion.action_match, t.motion.vehicles)},
+                          {"speed_match", share(t.motion.speed_match, t.motion.vehicles)},
+                          {"no_overlap", share(t.motion.no_overlap, t.motion.vehicles)}}},
+              {"failures", t.failures}};
+}
+
+void draw_chart(const EvalArgs& a, const json& report) {
+  std::vector<bench::ChartPoint> points;
+  for (const auto& [name, c] : report["by_category"].items())
+    points.push_back({name, c["mean_decision_latency_ms"].get<double>(), c["accuracy"].get<double>()});
+  points.push_back({"all (" + report["backend"].get<std::string>() + ")", report["mean_decision_latency_ms"].get<double>(),
+                    report["accuracy"].get<double>()});
+  bench::write_scatter_png(a.chart, {"Decisions per category: " + std::filesystem::path(a.cases).filename().string(),
+                                     "mean decision latency per round [ms]", "accuracy", true},
+                           points);
 }
 
 int run_eval(const EvalArgs& a) {
@@ -63,92 +169,21 @@ int run_eval(const EvalArgs& a) {
     // Where the results go, checked before any work.
     if (!a.out.empty()) prepare_output_file(a.out);
     if (!a.chart.empty()) prepare_output_file(a.chart, "--chart");
-    const auto cases = load_cases(a.cases);
-    const auto scene = scene::load_scene(a.scene);
+    const auto cases = load_cases(a.cases, a.scene);
+    std::map<std::string, scene::Scene> scenes;  // each scene loaded once, before any case runs
+    std::vector<std::string> scene_names;
+    for (const auto& c : cases)
+      if (!scenes.contains(c.scene)) {
+        scenes.emplace(c.scene, scene::load_scene(c.scene));
+        scene_names.push_back(scenes.at(c.scene).name);
+      }
     std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend(a.backend);
     agents::manager::Manager manager(agents::local_caller(backend), backend);
-    std::map<std::string, std::pair<int, int>> by_category;
-    std::map<std::string, std::pair<double, int>> latency_by_category;  // total ms, rounds
-    json failures = json::array();
-    double total_ms = 0;
-    int rounds = 0, passed = 0;
-    bench::MotionQuality motion;
-    for (const auto& c : cases) {
-      json state;
-      bool error = false;
-      std::string error_text;
-      for (const auto& r : c.rounds) {
-        const auto t0 = std::chrono::steady_clock::now();
-        try {
-          state = manager.chat(c.id, a.scene, r).edit_state;
-        } catch (const std::exception& e) {
-          error = true;
-          error_text = e.what();
-        }
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-        total_ms += ms;
-        ++rounds;
-        latency_by_category[c.category].first += ms;
-        latency_by_category[c.category].second++;
-        if (error) break;
-      }
-      manager.reset(c.id);
-      bool ok = !error;
-      json case_fail = json::array();
-      if (error) case_fail.push_back({{"check", "run"}, {"detail", error_text}});
-      else
-        for (const auto& r : bench::grade_case(scene, state, c.expect))
-          if (!r.pass) {
-            ok = false;
-            case_fail.push_back({{"check", json::parse(r.check)}, {"detail", r.detail}});
-          }
-      if (!error) {
-        const auto q = bench::motion_quality(scene, state);
-        motion.vehicles += q.vehicles;
-        motion.on_lane += q.on_lane;
-        motion.action_match += q.action_match;
-        motion.speed_match += q.speed_match;
-      }
-      auto& cat = by_category[c.category];
-      cat.second++;
-      if (ok) {
-        cat.first++;
-        ++passed;
-      } else {
-        failures.push_back({{"id", c.id}, {"rounds", c.rounds}, {"failed", case_fail}});
-      }
-      if (a.verbose) std::cerr << (ok ? "pass " : "FAIL ") << c.id << (ok ? "" : "  " + case_fail.dump()) << "\n";
-    }
-    json cats = json::object();
-    for (const auto& [name, pt] : by_category)
-      cats[name] = {{"passed", pt.first}, {"total", pt.second}, {"accuracy", double(pt.first) / pt.second},
-                    {"mean_decision_latency_ms", latency_by_category[name].first / latency_by_category[name].second}};
-    auto share = [](int k, int n) { return n ? double(k) / n : 1.0; };
-    const json report{
-        {"cases_file", a.cases},
-        {"scene", scene.name},
-        {"backend", backend->name()},
-        {"cases", cases.size()},
-        {"passed", passed},
-        {"accuracy", share(passed, int(cases.size()))},
-        {"by_category", cats},
-        {"by_backend", {{backend->name(), share(passed, int(cases.size()))}}},
-        {"mean_decision_latency_ms", rounds ? total_ms / rounds : 0.0},
-        {"motion", {{"vehicles", motion.vehicles}, {"on_lane", share(motion.on_lane, motion.vehicles)},
-                    {"action_match", share(motion.action_match, motion.vehicles)},
-                    {"speed_match", share(motion.speed_match, motion.vehicles)}}},
-        {"failures", failures}};
+    Tally tally;
+    for (const auto& c : cases) run_case(manager, scenes.at(c.scene), c, a.verbose, tally);
+    const json report = make_report(a, backend->name(), cases.size(), scene_names, tally);
     std::cout << report.dump(1) << std::endl;
-    if (!a.chart.empty()) {
-      std::vector<bench::ChartPoint> points;
-      for (const auto& [name, c] : cats.items())
-        points.push_back({name, c["mean_decision_latency_ms"].get<double>(), c["accuracy"].get<double>()});
-      points.push_back({"all (" + backend->name() + ")", report["mean_decision_latency_ms"].get<double>(),
-                        report["accuracy"].get<double>()});
-      bench::write_scatter_png(a.chart, {"Decisions per category: " + std::filesystem::path(a.cases).filename().string(),
-                                         "mean decision latency per round [ms]", "accuracy", true},
-                               points);
-    }
+    if (!a.chart.empty()) draw_chart(a, report);
     if (!a.out.empty()) std::ofstream(a.out) << report.dump(1) << "\n";
     return exit_code::kOk;
   } catch (const scene::SceneError& e) {
@@ -173,7 +208,9 @@ void add_eval_command(CLI::App& app, int& result) {
       "commands", "Grade the decision pipeline on command cases (../shared/data/commands/README.md format): accuracy "
                   "per category and backend, mean decision latency, motion quality. Runs the agents in-process.");
   cmd->add_option("--cases", args->cases, "cases file (JSON lines)")->required();
-  cmd->add_option("--scene", args->scene, "scene directory the cases speak about")->required();
+  cmd->add_option("--scene", args->scene,
+                  "scene directory the cases speak about (cases may name their own with a 'scene' field, a path "
+                  "relative to the cases file)");
   cmd->add_option("--backend", args->backend, "LLM backend (default: $CHATSIM_LLM or offline)");
   cmd->add_option("--out", args->out, "also write the report here (e.g. bench/results/commands-dev.json)");
   cmd->add_option("--chart", args->chart, "also draw accuracy against latency per category as a PNG");

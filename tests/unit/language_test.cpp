@@ -1,4 +1,6 @@
 // The offline interpreter's parts: words and numbers, colours, and each agent's parser.
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "agents/asset/asset_choice.hpp"
@@ -186,4 +188,40 @@ TEST(View, CameraPosesFollowTheOffsetsAndEgoMotion) {
   v.ego_motion = "slow";
   poses = view::camera_poses(s, v);
   EXPECT_NEAR(poses[10][0].translation().y(), 1.5 + view::ego_speed_mps("slow") * 1.0, 1e-9);
+}
+
+TEST(Language, MisspeltWordsAreReadAsTheDomainWordOneEditAway) {
+  auto w = text::words("delte the motorcyle on the rigth, teh red one");
+  lexicon::correct_typos(w);
+  if (!std::filesystem::exists("/usr/share/dict/american-english")) GTEST_SKIP() << "no English word list (wamerican)";
+  EXPECT_EQ(text::join(w), "delete the motorcycle on the right the red one");
+  // English words are never "corrected", however near a domain word: faster is not master.
+  auto english = text::words("make it faster in the lane");
+  lexicon::correct_typos(english);
+  EXPECT_EQ(text::join(english), "make it faster in the lane");
+}
+
+TEST(Language, MakesAndModelsComeFromTheVocabularyWithTheirBodyType) {
+  const auto x5 = lexicon::find_brands(text::words("add a black BMW X5 30 m ahead"));
+  ASSERT_EQ(x5.size(), 1u);
+  EXPECT_EQ(x5[0].brand, "bmw");
+  EXPECT_EQ(x5[0].type, "suv");
+  EXPECT_EQ(x5[0].end - x5[0].begin, 2u);  // the model is part of the mention
+  EXPECT_EQ(lexicon::find_brands(text::words("a Škoda Octavia"))[0].brand, "skoda");
+  EXPECT_EQ(lexicon::find_brands(text::words("a toyota hilux pickup"))[0].type, "truck");
+  EXPECT_EQ(lexicon::find_brands(text::words("the mazda mx-5"))[0].end, 4u);
+  // A number after a make is a distance when a unit follows, not a model.
+  EXPECT_EQ(lexicon::find_brands(text::words("a polestar 2 m ahead"))[0].end, 2u);
+  // Makes that are ordinary words count only before a model or a vehicle noun.
+  EXPECT_TRUE(lexicon::find_brands(text::words("take a seat by the man")).empty());
+  EXPECT_EQ(lexicon::find_brands(text::words("a man truck")).size(), 1u);
+}
+
+TEST(Language, NumbersWithHalvesAndSymbols) {
+  const auto q = text::quantities(text::words("raise it one and a half metres, back seven and a half m, look 10° right"),
+                                  {"meters", "m", "degrees"});
+  ASSERT_EQ(q.size(), 3u);
+  EXPECT_DOUBLE_EQ(q[0].value, 1.5);
+  EXPECT_DOUBLE_EQ(q[1].value, 7.5);
+  EXPECT_DOUBLE_EQ(q[2].value, 10);
 }

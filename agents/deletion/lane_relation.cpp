@@ -1,0 +1,83 @@
+#include "agents/deletion/lane_relation.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace chatsim::agents::deletion {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+double wrap(double a) { return std::remainder(a, 2 * kPi); }
+
+// The driving lane with the smallest offset from p among those p lies on, or -1.
+int lane_at(const scene::LaneMap& lanes, const Eigen::Vector2d& p, bool driving_only) {
+  int best = -1;
+  double best_lat = 1e9;
+  for (const auto& pos : lanes.containing(p, 0.3)) {
+    if (driving_only && lanes.lanes()[size_t(pos.lane)].type != "driving") continue;
+    if (std::abs(pos.lateral) < best_lat) {
+      best_lat = std::abs(pos.lateral);
+      best = pos.lane;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) {
+  LaneRelation r;
+  const auto& lanes = scene.lanes;
+  if (lanes.empty() || scene.frames.empty()) return r;
+  const int own = lane_at(lanes, p, false);
+  if (own < 0) return r;
+  if (lanes.lanes()[size_t(own)].type == "parking") {
+    r.parking = true;
+    return r;
+  }
+  const auto& ego_pose = scene.frames.front().ego_to_world;
+  const Eigen::Vector2d ego = ego_pose.translation().head<2>();
+  const Eigen::Vector3d fwd = ego_pose.linear().col(0);
+  const int ego_lane = lane_at(lanes, ego, true);
+  // The ego's direction of travel where the object is: along the ego's lane (roads curve).
+  double ref_yaw = std::atan2(fwd.y(), fwd.x());
+  if (ego_lane >= 0) ref_yaw = lanes.travel_yaw_at(ego_lane, lanes.project(ego_lane, p).s);
+  const auto same_way = [&](int lane, double s) { return std::abs(wrap(lanes.travel_yaw_at(lane, s) - ref_yaw)); };
+  const double d = same_way(own, lanes.project(own, p).s);
+  if (d > 3 * kPi / 4) {
+    r.oncoming = true;
+    return r;
+  }
+  if (d > kPi / 4) {
+    r.cross = true;
+    return r;
+  }
+  r.ego = own == ego_lane;
+  // Same-direction driving lanes beside the object's, by which side of it they lie.
+  int to_left = 0, to_right = 0;
+  for (size_t i = 0; i < lanes.lanes().size(); ++i) {
+    if (int(i) == own || lanes.lanes()[i].type != "driving") continue;
+    const auto pos = lanes.project(int(i), p);
+    if (std::abs(pos.lateral) > 12 || same_way(int(i), pos.s) > kPi / 4) continue;
+    if (pos.s <= 0.5 || pos.s >= lanes.lanes()[i].length() - 0.5) continue;  // beside it, not beyond its end
+    if (pos.lateral > 1.5) ++to_right;  // p lies left of lane i: lane i is to its right
+    else if (pos.lateral < -1.5) ++to_left;
+  }
+  r.left = to_left == 0;
+  r.right = to_right == 0;
+  r.middle = to_left > 0 && to_right > 0;
+  return r;
+}
+
+bool has_lane(const LaneRelation& r, const std::string& lane) {
+  if (lane == "ego") return r.ego;
+  if (lane == "left") return r.left;
+  if (lane == "middle") return r.middle;
+  if (lane == "right") return r.right;
+  if (lane == "oncoming") return r.oncoming;
+  if (lane == "cross") return r.cross;
+  if (lane == "parking") return r.parking;
+  return false;
+}
+
+}  // namespace chatsim::agents::deletion

@@ -1,0 +1,30 @@
+#pragma once
+// Where a labelled object stands on the lane map, in the words users select by: my lane, the
+// left / middle / right lane of my direction, the oncoming side, a side or cross street, a
+// parking lane. Computed from the lanes, so it holds on any layout (curved, one-way, divided).
+#include <string>
+
+#include <Eigen/Core>
+
+#include "common/scene/scene.hpp"
+
+namespace chatsim::agents::deletion {
+
+struct LaneRelation {
+  bool ego = false;       // the lane the ego drives in at frame 0
+  bool left = false;      // leftmost lane of the ego's direction (with one lane: left and right)
+  bool middle = false;    // lanes on both sides in the same direction
+  bool right = false;     // rightmost lane of the ego's direction
+  bool oncoming = false;  // a lane travelled against the ego's direction
+  bool cross = false;     // a lane across the ego's (side street, cross street)
+  bool parking = false;   // a parking lane or bay
+};
+
+// p: the object's centre at frame 0, world frame.
+LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p);
+
+// Whether a relation has the lane word a selector asks for (ego, left, middle, right, oncoming,
+// cross, parking).
+bool has_lane(const LaneRelation& r, const std::string& lane);
+
+}  // namespace chatsim::agents::deletion

@@ -1,0 +1,92 @@
+// Which vehicle words mean: added vehicles by name, colour, order or pronoun, and recorded ones
+// (through the deletion agent) as anchors for placing another relative to them.
+#include <algorithm>
+
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+#include "agents/manager/manager.hpp"
+
+namespace chatsim::agents::manager {
+
+using nlohmann::json;
+
+namespace {
+
+json anchor_json(const AddedVehicle& a) {
+  const auto& p0 = a.trajectory.front();
+  return {{"id", a.id}, {"x", p0["x"]}, {"y", p0["y"]}, {"yaw", p0["yaw"]}, {"size_lwh", a.asset["size_lwh"]},
+          {"speed_mps", a.speed_mps}, {"wrong_way", a.resolved.value("wrong_way", false)}};
+}
+
+}  // namespace
+
+std::optional<json> Manager::find_anchor(Conversation& c, const std::string& reference, int except) {
+  if (const auto it = c.recorded_anchors.find(reference); it != c.recorded_anchors.end()) return it->second;
+  if (reference == "removed") {  // "in its place": the vehicle removed last
+    if (c.removal_batches.empty()) return std::nullopt;
+    const auto out = call("deletion", c, "locate", {{"ids", c.removal_batches.back()}});
+    if (!out.ok || out.result.value("objects", json::array()).empty()) return std::nullopt;
+    const json anchor = out.result["objects"][0];
+    c.recorded_anchors[anchor["id"].get<std::string>()] = anchor;
+    return anchor;
+  }
+  auto ref = resolve(c, reference);
+  ref.erase(std::remove(ref.begin(), ref.end(), except), ref.end());
+  if (!ref.empty()) return anchor_json(c.added[size_t(ref.front())]);
+  const auto w = text::words(reference);
+  if (lexicon::find_types(w).empty() && lexicon::find_colors(w).empty() && lexicon::find_brands(w).empty())
+    return std::nullopt;  // "it" with nothing added: no recorded vehicle is meant
+  auto out = call("deletion", c, "select", {{"instruction", reference}, {"removed", c.removed}});
+  // "where the truck was": a removed vehicle is still a place.
+  if (out.ok && out.result.value("objects", json::array()).empty() && !c.removed.empty())
+    out = call("deletion", c, "select", {{"instruction", reference}, {"removed", json::array()}});
+  if (!out.ok || out.result.value("objects", json::array()).empty()) return std::nullopt;
+  const json anchor = out.result["objects"][0];
+  c.recorded_anchors[anchor["id"].get<std::string>()] = anchor;
+  return anchor;
+}
+
+std::vector<int> Manager::resolve(const Conversation& c, const std::string& reference) const {
+  std::vector<int> out;
+  const int n = int(c.added.size());
+  if (n == 0) return out;
+  for (int i = 0; i < n; ++i)
+    if (c.added[size_t(i)].id == reference) return {i};
+  const auto w = text::words(reference);
+  if (reference == "both" || text::has_phrase(w, "both")) {
+    if (c.last_group.size() >= 2) return c.last_group;
+    for (int i = std::max(0, n - 2); i < n; ++i) out.push_back(i);
+    return out;
+  }
+  if (reference == "them" || text::has_any(w, {"them", "they", "all added", "all the added"})) {
+    if (!c.last_group.empty()) return c.last_group;
+    for (int i = 0; i < n; ++i) out.push_back(i);
+    return out;
+  }
+  const auto brands = lexicon::find_brands(w);
+  const auto types = lexicon::find_types(w);
+  const auto colors = lexicon::find_colors(w);
+  static const char* ordinals[] = {"first", "second", "third", "fourth", "fifth"};
+  for (int k = 0; k < 5; ++k)
+    if (text::has_phrase(w, ordinals[k]) && k < n) return {k};
+  if (text::has_phrase(w, "last")) return {n - 1};
+  const bool typed = !types.empty() && types.front().type.type != "car" && types.front().type.type != "object";
+  if (brands.empty() && !typed && colors.empty()) {
+    // "it", "the added car", "the new one": the one spoken about last.
+    return {c.last_ref >= 0 && c.last_ref < n ? c.last_ref : n - 1};
+  }
+  // The most recent added vehicle that has every named brand, type and colour.
+  for (int i = n - 1; i >= 0; --i) {
+    const auto& a = c.added[size_t(i)].asset;
+    const auto bw = a.value("brand_words", std::vector<std::string>{});
+    if (!brands.empty() && std::find(bw.begin(), bw.end(), brands.front().brand) == bw.end()) continue;
+    if (typed && a.value("type", "") != types.front().type.type) continue;
+    if (!colors.empty() &&
+        lexicon::color_class(a.value("color_rgb", std::array<int, 3>{0, 0, 0})) != lexicon::color_class(colors.front().rgb))
+      continue;
+    return {i};
+  }
+  return out;
+}
+
+}  // namespace chatsim::agents::manager

@@ -1,0 +1,95 @@
+#include "agents/motion/car_following.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace chatsim::agents::motion {
+namespace {
+
+// Where a box stands along the path: arc length and sideways offset of its centre (the nearest
+// path point within `window` metres ahead of `from`), or nullopt past the path's end.
+std::optional<std::pair<double, double>> on_path(const Path& path, const Eigen::Vector2d& p, double from, double window) {
+  double best_d2 = std::numeric_limits<double>::infinity(), best_s = 0;
+  const auto lo = std::lower_bound(path.s.begin(), path.s.end(), from);
+  for (auto it = lo; it != path.s.end() && *it <= from + window; ++it) {
+    const double d2 = (path.points[size_t(it - path.s.begin())] - p).squaredNorm();
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best_s = *it;
+    }
+  }
+  if (!std::isfinite(best_d2) || best_s >= path.length() - 1e-6) return std::nullopt;
+  return std::make_pair(best_s, std::sqrt(best_d2));
+}
+
+struct Leader {
+  double gap = std::numeric_limits<double>::infinity();  // bumper to bumper, m
+  double speed = 0;                                       // along the path, m/s
+};
+
+Leader nearest_leader(const Path& path, double s, const Eigen::Vector3d& own, const std::vector<FollowedBox>& others,
+                      size_t frame, double frame_dt) {
+  Leader best;
+  for (const auto& o : others) {
+    if (frame >= o.poses->size() || !(*o.poses)[frame]) continue;
+    const Pose2& q = *(*o.poses)[frame];
+    const auto at = on_path(path, {q.x, q.y}, s, 80.0);
+    if (!at || at->first <= s) continue;
+    if (at->second > (own.y() + o.size_lwh.y()) / 2 + 0.3) continue;  // beside the path, not on it
+    const double gap = at->first - s - (own.x() + o.size_lwh.x()) / 2;
+    if (gap >= best.gap) continue;
+    double along = 0;  // its speed along our path there
+    if (frame + 1 < o.poses->size() && (*o.poses)[frame + 1]) {
+      const Pose2& n = *(*o.poses)[frame + 1];
+      const double yaw = path.yaw_at(at->first);
+      const Eigen::Vector2d vel((n.x - q.x) / frame_dt, (n.y - q.y) / frame_dt);
+      along = vel.x() * std::cos(yaw) + vel.y() * std::sin(yaw);
+      // Crossing our path (a pedestrian, cross traffic): not a leader; the collision check decides.
+      if (vel.norm() > 0.5 && std::abs(along) < 0.7 * vel.norm()) continue;
+    }
+    best.gap = gap;
+    best.speed = along;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<double> follow_leaders(const Path& path, const std::vector<double>& free_arc, const std::vector<double>& times,
+                                   const Eigen::Vector3d& own_size, const std::vector<FollowedBox>& others,
+                                   const IdmParams& p) {
+  if (times.size() < 2 || free_arc.size() != times.size()) return free_arc;
+  std::vector<double> out{free_arc.front()};
+  double s = free_arc.front();
+  double v = std::max(0.0, (free_arc[1] - free_arc[0]) / std::max(1e-6, times[1] - times[0]));
+  for (size_t f = 0; f + 1 < times.size(); ++f) {
+    const double frame_dt = std::max(1e-6, times[f + 1] - times[f]);
+    // Desired speed here: the free-flow profile's (it already slows for curves).
+    const double v0 = std::max(0.1, (free_arc[f + 1] - free_arc[f]) / frame_dt);
+    Leader lead = nearest_leader(path, s, own_size, others, f, frame_dt);
+    // A leader pulling away faster than we want to drive never holds us up: IDM would brake
+    // hard to open its safe gap, and the traffic behind us would run into us.
+    if (lead.speed >= v0 && lead.gap > 0) lead = Leader{};
+    const int steps = 5;
+    const double dt = frame_dt / steps;
+    const double s_frame = s;
+    for (int k = 0; k < steps; ++k) {
+      double interaction = 0;
+      if (std::isfinite(lead.gap)) {
+        // The gap at the frame, closed by our travel and opened by the leader's since.
+        const double gap = std::max(0.1, lead.gap - (s - s_frame) + lead.speed * k * dt);
+        const double desired_gap =
+            p.min_gap + std::max(0.0, v * p.headway_s + v * (v - lead.speed) / (2 * std::sqrt(p.max_accel * p.comfort_brake)));
+        interaction = (desired_gap / gap) * (desired_gap / gap);
+      }
+      const double a = p.max_accel * (1 - std::pow(v / v0, 4) - interaction);
+      v = std::max(0.0, v + a * dt);
+      s += v * dt;
+    }
+    out.push_back(std::min(s, path.length()));
+  }
+  return out;
+}
+
+}  // namespace chatsim::agents::motion

@@ -1,0 +1,234 @@
+#include "agents/motion/planner_impl.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace chatsim::agents::motion::detail {
+
+EgoFrame ego_frame(const scene::Scene& scene) {
+  if (scene.frames.empty()) return {};
+  const auto& t = scene.frames.front().ego_to_world;
+  const Eigen::Vector3d x = t.linear().col(0);
+  return {t.translation().head<2>(), std::atan2(x.y(), x.x())};
+}
+
+Region region_for(const std::string& placement, const MotionIntent& m, double widen) {
+  Region r;
+  double d_default = 15;
+  if (placement == "front" && m.lane == "cross") r = {-75, 75, false, 4, 70, 0};  // side streets lie off the axis
+  else if (placement == "front") r = {-20, 20, false, 4, 70, 0};
+  else if (placement == "left_front") r = {15, 70, false, 4, 45, 0}, d_default = 14;
+  else if (placement == "right_front") r = {-70, -15, false, 4, 45, 0}, d_default = 14;
+  else if (placement == "left") r = {65, 115, false, 1, 15, 0}, d_default = 3.5;
+  else if (placement == "right") r = {-115, -65, false, 1, 15, 0}, d_default = 3.5;
+  else if (placement == "back") r = {115, 180, true, 4, 70, 0};
+  const bool side = placement == "left" || placement == "right";
+  // Parked "on the right": anywhere along that kerb in sight, not only straight beside the ego.
+  if (side && (m.action == "static" || m.speed == "static" || m.lane == "parking") && !m.distance_m) {
+    r.a_min = placement == "left" ? 20 : -160;
+    r.a_max = placement == "left" ? 160 : -20;
+    r.d_max = 30;
+  }
+  if (m.distance_word == "close") d_default = side ? 3.5 : 9;
+  if (m.distance_word == "far") d_default = side ? 8 : 40;
+  // "on the right, 20 m ahead": a side lane far ahead is only a few degrees off the axis; so is
+  // a side street some way up the road.
+  const bool far_side = m.distance_m || m.lane == "cross";
+  if (far_side && placement == "left_front") r.a_min = 3;
+  if (far_side && placement == "right_front") r.a_max = -3;
+  if (m.lane == "cross") r.d_max = 120;
+  if (widen > 1 && !r.back && !m.distance_m) {  // a second look round (a distance widens by itself)
+    const double extra = 20 * (widen - 1);
+    r.a_min = r.a_min >= 0 ? std::max(0.0, r.a_min - extra) : std::max(-180.0, r.a_min - extra);
+    r.a_max = r.a_max <= 0 ? std::min(0.0, r.a_max + extra) : std::min(180.0, r.a_max + extra);
+  }
+  r.d_pref = m.distance_m.value_or(d_default);
+  if (m.distance_m) {
+    const double tol = std::max(3.0, 0.2 * *m.distance_m) * widen;
+    r.d_min = std::max(0.5, *m.distance_m - tol);
+    r.d_max = *m.distance_m + tol;
+  }
+  return r;
+}
+
+bool in_region(const Region& r, const Eigen::Vector2d& pe) {
+  const double d = pe.norm();
+  if (d < r.d_min || d > r.d_max) return false;
+  const double a = std::atan2(pe.y(), pe.x()) / kDeg;
+  return r.back ? std::abs(a) >= r.a_min : (a >= r.a_min && a <= r.a_max);
+}
+
+bool Planner::nothing_said_about_motion() const {
+  return !m_.action && !m_.speed && !m_.speed_mps && !m_.direction && !m_.wrong_way;
+}
+
+bool Planner::wants_parked(bool on_parking) const {
+  if (!movable_) return true;
+  if (m_.action == "static" || m_.speed == "static") return true;
+  // A parking lane with no motion asked for: park there.
+  return on_parking && !m_.action && !m_.speed && !m_.speed_mps && !m_.direction && !m_.wrong_way;
+}
+
+bool Planner::same_way_as_ego(int lane, double s) const {
+  return std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw)) > 0;
+}
+
+double Planner::lane_hint_penalty(int lane, double s) const {
+  if (!m_.lane) return 0;
+  const auto& l = scene_.lanes.lanes()[size_t(lane)];
+  const double lat = lateral_of(lane);
+  if (*m_.lane == "ego") return lane == ego_lane_ ? 0 : 60;
+  if (*m_.lane == "parking") return l.type == "parking" ? 0 : 60;
+  if (*m_.lane == "oncoming") return l.type == "driving" && !same_way_as_ego(lane, s) ? std::abs(lat) * 0.5 : 60;
+  if (*m_.lane == "left") return l.type == "driving" && lat > 1.5 && lat < 5.5 ? 0 : 60;
+  if (*m_.lane == "right") return l.type == "driving" && lat < -1.5 && lat > -5.5 ? 0 : 60;
+  if (*m_.lane == "cross")  // a lane across the ego's: a side or cross street
+    return l.type == "driving" && std::abs(std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw))) < 0.5 ? 0 : 60;
+  return 0;
+}
+
+// Direction checks and preferences for one candidate travelling dir on lane.
+std::optional<double> Planner::direction_score(int lane, double s, int dir, bool parked) const {
+  if (parked) return 0.0;
+  const double heading = scene_.lanes.tangent_yaw_at(lane, s) + (dir > 0 ? 0 : kPi);
+  const bool backward = m_.action == "backward";
+  const double motion_yaw = heading + (backward ? kPi : 0);
+  const Eigen::Vector2d p = scene_.lanes.point_at(lane, s);
+  const bool toward = dir_of(motion_yaw).dot(ego_.p - p) > 0;
+  if (m_.direction && (*m_.direction == "toward") != toward) return std::nullopt;
+  double score = 0;
+  if (!m_.direction && !m_.wrong_way && !m_.lane) {
+    // Unsaid: traffic in the ego's direction is the usual picture.
+    if (!same_way_as_ego(lane, s)) score += 8;
+  }
+  return score;
+}
+
+std::vector<Candidate> Planner::region_candidates() const {
+  auto out = region_candidates(false);
+  // Only a parking lane lies there: drive along it rather than refuse.
+  if (out.empty()) out = region_candidates(true);
+  return out;
+}
+
+std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const {
+  std::vector<Candidate> out;
+  const std::string placement = m_.placement.value_or("front");
+  const Region region = region_for(placement, m_, widen_);
+  const auto& lanes = scene_.lanes.lanes();
+  for (size_t li = 0; li < lanes.size(); ++li) {
+    const auto& lane = lanes[li];
+    if (lane.type != "driving" && lane.type != "parking") continue;
+    const bool parking = lane.type == "parking";
+    const bool parked = wants_parked(parking);
+    if (parking && !parked && !m_.lane && !moving_on_parking) continue;  // moving traffic stays off parking lanes
+    std::vector<int> dirs;
+    if (lane.direction == scene::TrafficDirection::Both) dirs = {1, -1};
+    else dirs = {m_.wrong_way.value_or(false) ? -legal_dir(lane) : legal_dir(lane)};
+    for (double s = 0.5; s < lane.length(); s += 1.0) {
+      const Eigen::Vector2d pe = ego_.to_ego(scene_.lanes.point_at(int(li), s));
+      if (!in_region(region, pe)) continue;
+      for (int dir : dirs) {
+        const auto ds = direction_score(int(li), s, dir, parked);
+        if (!ds) continue;
+        Candidate c{int(li), s, dir, parked, *ds};
+        c.score += std::abs(pe.norm() - region.d_pref);
+        c.score += lane_hint_penalty(int(li), s);
+        if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(pe.y());
+        if (placement == "left" || placement == "right") c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x());
+        if (parked && movable_ && !parking && (m_.action == "static")) c.score += 4;  // parked cars belong at the kerb
+        if (!movable_ && parking) c.score += 3;
+        out.push_back(c);
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<Candidate> Planner::relative_candidates() const {
+  std::vector<Candidate> out;
+  if (!req_.anchor) return out;
+  const Anchor& a = *req_.anchor;
+  const Eigen::Vector2d ap(a.start.x, a.start.y);
+  // The anchor's lane: the one it lies on whose direction matches its heading either way.
+  int lane = -1;
+  int dir = 1;
+  double s0 = 0;
+  double best = 1e9;
+  for (const auto& pos : scene_.lanes.containing(ap, 0.5)) {
+    const double d = std::abs(pos.lateral);
+    if (d < best) {
+      best = d;
+      lane = pos.lane;
+      s0 = pos.s;
+      dir = std::cos(wrap(a.start.yaw - pos.tangent_yaw)) >= 0 ? 1 : -1;
+    }
+  }
+  if (lane < 0) return out;
+  const std::string region = m_.relative->region;
+  const double base_gap = (a.size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0;
+  if (region == "at") {  // in its place: the anchor's own stretch of lane
+    const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].type == "parking") ||
+                        (a.speed_mps < 0.5 && nothing_said_about_motion());
+    for (double shift = 0; shift <= 10; shift += 0.5)
+      for (int sgn : {1, -1}) {
+        const double s = s0 + sgn * shift;
+        if (s >= 0 && s <= scene_.lanes.lanes()[size_t(lane)].length()) out.push_back({lane, s, dir, parked, shift});
+        if (shift == 0) break;
+      }
+    // Parked where a moving vehicle was: the kerb beside that place (traffic keeps using the lane).
+    if (parked && scene_.lanes.lanes()[size_t(lane)].type != "parking")
+      for (size_t li = 0; li < scene_.lanes.lanes().size(); ++li) {
+        const auto& l = scene_.lanes.lanes()[li];
+        const auto pos = scene_.lanes.project(int(li), ap);
+        if (l.type != "parking" || std::abs(pos.lateral) > 5) continue;
+        for (double shift = 0; shift <= 10; shift += 0.5)
+          for (int sgn : {1, -1}) {
+            const double s = pos.s + sgn * shift;
+            if (s >= 0 && s <= l.length()) out.push_back({int(li), s, legal_dir(l), true, shift + std::abs(pos.lateral)});
+          }
+      }
+  } else if (region == "front" || region == "back") {
+    const int k = region == "front" ? 1 : -1;
+    for (double gap = base_gap; gap < base_gap + 45; gap += 0.5) {
+      const double s = s0 + k * dir * gap;
+      if (s < 0 || s > scene_.lanes.lanes()[size_t(lane)].length()) continue;
+      const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].type == "parking") ||
+                          (a.speed_mps == 0 && nothing_said_about_motion());
+      Candidate c{lane, s, dir, parked, gap - base_gap};
+      out.push_back(c);
+    }
+  } else {
+    const double side = region == "left" ? 1 : -1;
+    const Eigen::Vector2d left(-std::sin(a.start.yaw), std::cos(a.start.yaw));
+    for (size_t li = 0; li < scene_.lanes.lanes().size(); ++li) {
+      if (int(li) == lane) continue;
+      const auto pos = scene_.lanes.project(int(li), ap);
+      const double lateral = (scene_.lanes.point_at(int(li), pos.s) - ap).dot(left);
+      if (side * lateral < 1.5 || side * lateral > 8) continue;
+      const auto& l = scene_.lanes.lanes()[li];
+      const bool parked = wants_parked(l.type == "parking") || (a.speed_mps == 0 && nothing_said_about_motion());
+      const int d2 = std::cos(wrap(a.start.yaw - pos.tangent_yaw)) >= 0 ? 1 : -1;
+      for (double shift = 0; shift < 12; shift += 0.5)
+        for (int sgn : {1, -1}) {
+          const double s = pos.s + sgn * shift;
+          if (s < 0 || s > l.length()) continue;
+          out.push_back({int(li), s, d2, parked, std::abs(lateral) + shift});
+        }
+    }
+  }
+  // Explicit direction words override following the anchor's way.
+  for (auto& c : out) {
+    if (c.parked || !m_.direction) continue;
+    const auto ds = direction_score(c.lane, c.s, c.dir, false);
+    if (!ds) c.dir = -c.dir;
+  }
+  return out;
+}
+
+double Planner::lateral_of(int lane) const {  // signed ego-frame lateral offset of a lane near the ego
+  const auto pos = scene_.lanes.project(lane, ego_.p);
+  return ego_.to_ego(scene_.lanes.point_at(lane, pos.s)).y();
+}
+
+}  // namespace chatsim::agents::motion::detail

@@ -1,0 +1,222 @@
+#include "agents/motion/planner_impl.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+#include "agents/motion/car_following.hpp"
+
+namespace chatsim::agents::motion::detail {
+
+double Planner::desired_speed(bool parked) const {
+  if (parked) return 0;
+  if (m_.speed_mps) return *m_.speed_mps;
+  const std::string word = m_.speed.value_or("normal");
+  if (m_.chase.value_or(false) && req_.anchor && !m_.speed) return std::max(req_.anchor->speed_mps, 4.0);
+  // In a removed vehicle's place with no motion said: it moves as that vehicle did.
+  if (m_.relative && m_.relative->region == "at" && req_.anchor && !m_.speed && !m_.action) return req_.anchor->speed_mps;
+  if (m_.action == "backward") return word == "fast" ? 5.0 : word == "slow" ? 2.0 : 3.0;
+  return speed_for(word);
+}
+
+Evaluated Planner::evaluate(const Candidate& c) const {
+  Evaluated e;
+  e.speed = desired_speed(c.parked);
+  const double total = e.speed * (times_.back() + 1) + 20;
+  const auto& map = scene_.lanes;
+  std::string action = c.parked ? "static" : m_.action.value_or("straight");
+  Path path;
+  std::vector<Eigen::Vector2d> connector;  // a turn's junction curve: on the road even where unmapped
+  bool reverse_yaw = false;
+  if (action == "cut_in") {
+    const double lat = ego_.to_ego(map.point_at(c.lane, c.s)).y();
+    if (std::abs(lat) < 1.5) {
+      e.invalid_reason = "cutting in needs a start in a lane beside the ego's";
+      return e;
+    }
+    action = lat > 0 ? "lane_change_right" : "lane_change_left";
+  }
+  if (action == "straight" && e.speed > 0 && map.lanes()[size_t(c.lane)].type == "parking") {
+    // Moving off a parking lane: it pulls out into the driving lane beside it.
+    if (const auto side = pull_out_side(c)) action = *side > 0 ? "lane_change_left" : "lane_change_right";
+  }
+  if (action == "lane_change_ego") {
+    const double lat = ego_.to_ego(map.point_at(c.lane, c.s)).y();
+    if (std::abs(lat) < 1.5) return invalid(e, "it starts in the ego's lane already");
+    action = lat > 0 ? "lane_change_right" : "lane_change_left";
+  }
+  if (action == "join") {  // out of a side street: whichever turn reaches a lane
+    const bool left = turn_path(map, c.lane, c.s, c.dir, 1, total).has_value();
+    action = left ? "turn_left" : "turn_right";
+  }
+  if (action == "static" || e.speed <= 0) {
+    action = "static";
+    e.speed = 0;
+    path = lane_path(map, c.lane, c.s, c.dir, 1.0);
+  } else if (action == "backward") {
+    path = lane_path(map, c.lane, c.s, -c.dir, total);
+    reverse_yaw = true;
+  } else if (action == "turn_left" || action == "turn_right") {
+    auto turn = turn_path(map, c.lane, c.s, c.dir, action == "turn_left" ? 1 : -1, total);
+    if (!turn) {
+      e.invalid_reason = std::string("no crossing lane ahead to turn ") + (action == "turn_left" ? "left" : "right") +
+                         " into on the lane map";
+      return e;
+    }
+    path = std::move(turn->path);
+    connector = std::move(turn->connector);
+  } else if (action == "lane_change_left" || action == "lane_change_right") {
+    // Pulling out of a parking lane starts at once and turns out sharply (the car ahead is close).
+    const bool pulling_out = map.lanes()[size_t(c.lane)].type == "parking";
+    const double start = pulling_out ? 0.5 : std::max(4.0, e.speed * 1.0);
+    const double length = pulling_out ? std::max(10.0, e.speed * 1.5) : std::max(15.0, e.speed * 3.0);
+    auto lc = lane_change_path(map, c.lane, c.s, c.dir, action == "lane_change_left" ? 1 : -1, total, start, length);
+    if (lc.target_lane.empty()) {
+      e.invalid_reason = std::string("no lane to the ") + (action == "lane_change_left" ? "left" : "right") +
+                         " in the same direction to change into";
+      return e;
+    }
+    path = std::move(lc.path);
+  } else {
+    action = "straight";
+    path = lane_path(map, c.lane, c.s, c.dir, total);
+  }
+  const auto free_arc = arc_lengths_at(path, e.speed, times_);
+  const bool follows = action != "static" && !reverse_yaw;
+  e.poses = poses_along(path, follows ? follow_traffic(path, free_arc, e) : free_arc, action, reverse_yaw);
+  if (const auto why = action_missing(e.poses, action)) {
+    // Held up behind traffic the action would not happen: plan it free, and let the collision
+    // check say whom it meets.
+    if (!follows || e.slowed_to < 0) return invalid(e, *why);
+    e.slowed_to = -1;
+    e.poses = poses_along(path, free_arc, action, reverse_yaw);
+    if (const auto free_why = action_missing(e.poses, action)) return invalid(e, *free_why);
+  }
+  if (e.slowed_to >= 0 && action == "straight") try_overtake(c, e, action);
+  // A vehicle that drives off the mapped lanes leaves the scene: its trajectory ends there.
+  size_t keep = e.poses.size();
+  int lane_hint = c.lane;
+  const auto on_connector = [&](const Eigen::Vector2d& p) {
+    return std::any_of(connector.begin(), connector.end(), [&](const Eigen::Vector2d& q) { return (q - p).norm() < 2.5; });
+  };
+  for (size_t f = 1; f < e.poses.size(); ++f) {
+    const Eigen::Vector2d p(e.poses[f].x, e.poses[f].y);
+    if (!scene_.lanes.on_some_lane(p, 0.3, lane_hint) && !on_connector(p)) {
+      keep = f;
+      break;
+    }
+  }
+  if (keep < 2) return invalid(e, "it would leave the mapped lanes at once");
+  e.truncated = keep < e.poses.size();
+  e.poses.resize(keep);
+  e.valid = true;
+  e.action = action;
+  for (size_t f = 0; f < e.poses.size() && e.first_collision < 0; ++f)
+    for (const auto& ob : req_.obstacles) {
+      if (f >= ob.poses.size() || !ob.poses[f]) continue;
+      if (!boxes_overlap(e.poses[f], req_.size_lwh, *ob.poses[f], ob.size_lwh, 1.0, kClearanceM)) continue;
+      if (ob.pedestrian) {
+        if (e.crosses_pedestrian.empty()) e.crosses_pedestrian = ob.id;
+        continue;
+      }
+      e.first_collision = int(f);
+      e.collides_with = ob.id;
+      break;
+    }
+  return e;
+}
+
+// The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that
+// runs the way the candidate faces.
+std::optional<int> Planner::pull_out_side(const Candidate& c) const {
+  const auto& map = scene_.lanes;
+  const Eigen::Vector2d p = map.point_at(c.lane, c.s);
+  const double yaw = map.tangent_yaw_at(c.lane, c.s) + (c.dir > 0 ? 0 : kPi);
+  std::optional<int> side;
+  double best = 6.0;
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    if (map.lanes()[i].type != "driving") continue;
+    const auto pos = map.project(int(i), p);
+    if (std::abs(pos.lateral) >= best || std::cos(wrap(map.travel_yaw_at(int(i), pos.s) - yaw)) < 0.7) continue;
+    best = std::abs(pos.lateral);
+    side = pos.lateral < 0 ? 1 : -1;  // p right of that lane: the lane is to its left
+  }
+  return side;
+}
+
+// Held up behind slower traffic when the user asked for a speed: pass it in the lane beside,
+// the user's way of driving (left first), when that lane lets it keep the speed.
+void Planner::try_overtake(const Candidate& c, Evaluated& e, std::string& action) const {
+  static const char* kLaneWords[] = {"ego", "left", "right", "oncoming", "parking", "cross"};
+  const bool lane_asked = m_.lane && std::find(std::begin(kLaneWords), std::end(kLaneWords), *m_.lane) != std::end(kLaneWords);
+  if (!(m_.speed || m_.speed_mps) || lane_asked || (m_.action && *m_.action != "straight")) return;
+  const double total = e.speed * (times_.back() + 1) + 20;
+  for (int sign : {1, -1}) {
+    const auto lc = lane_change_path(scene_.lanes, c.lane, c.s, c.dir, sign, total, std::max(4.0, e.speed),
+                                     std::max(15.0, e.speed * 2.5));
+    if (lc.target_lane.empty()) continue;
+    Evaluated trial = e;
+    trial.slowed_to = -1;
+    trial.slow_penalty = 0;
+    const auto arc = follow_traffic(lc.path, arc_lengths_at(lc.path, e.speed, times_), trial);
+    if (trial.slowed_to >= 0) continue;
+    trial.poses = poses_along(lc.path, arc, "lane_change", false);
+    if (action_missing(trial.poses, "lane_change")) continue;
+    e = trial;
+    action = sign > 0 ? "lane_change_left" : "lane_change_right";
+    return;
+  }
+}
+
+std::vector<Pose2> Planner::poses_along(const Path& path, const std::vector<double>& arc, const std::string& action,
+                               bool reverse_yaw) const {
+  if (action != "static" && !reverse_yaw) return bicycle_track(path, arc, times_);
+  // Standing still, or reversing slowly along a straight lane: the path itself.
+  std::vector<Pose2> poses;
+  for (double q : arc) {
+    const Eigen::Vector2d p = path.at(q);
+    poses.push_back({p.x(), p.y(), wrap(path.yaw_at(q) + (reverse_yaw ? kPi : 0))});
+  }
+  return poses;
+}
+
+// Why the poses do not do the action within the clip, if they do not.
+std::optional<std::string> Planner::action_missing(const std::vector<Pose2>& poses, const std::string& action) {
+  const double turned = wrap(poses.back().yaw - poses.front().yaw) / kDeg;
+  if (action == "turn_left" && turned < 60) return "the left turn does not fit in the clip from here";
+  if (action == "turn_right" && turned > -60) return "the right turn does not fit in the clip from here";
+  if (action.rfind("lane_change", 0) == 0) {
+    const double yaw0 = poses.front().yaw;
+    const Eigen::Vector2d d(poses.back().x - poses.front().x, poses.back().y - poses.front().y);
+    if (std::abs(-std::sin(yaw0) * d.x() + std::cos(yaw0) * d.y()) < 2.0)
+      return "the lane change does not fit in the clip from here";
+  }
+  return std::nullopt;
+}
+
+// Slows behind whatever is ahead on the path (car following), and says when that costs much
+// of the speed asked for.
+std::vector<double> Planner::follow_traffic(const Path& path, const std::vector<double>& free_arc, Evaluated& e) const {
+  std::vector<FollowedBox> others;
+  for (const auto& ob : req_.obstacles) others.push_back({ob.size_lwh, &ob.poses});
+  auto arc = follow_leaders(path, free_arc, times_, req_.size_lwh, others);
+  const double span = times_.back() - times_.front();
+  if (span > 0) {
+    const double free_mean = (free_arc.back() - free_arc.front()) / span, mean = (arc.back() - arc.front()) / span;
+    if (mean < 0.9 * free_mean) {
+      e.slowed_to = mean;
+      // A speed the user asked for weighs more than one left to the default.
+      const double weight = (m_.speed || m_.speed_mps) ? 4.0 : 1.0;
+      e.slow_penalty = weight * kSlowPenalty * (1 - mean / std::max(free_mean, 1e-6));
+    }
+  }
+  return arc;
+}
+
+Evaluated Planner::invalid(Evaluated e, const std::string& why) {
+  e.valid = false;
+  e.invalid_reason = why;
+  return e;
+}
+
+}  // namespace chatsim::agents::motion::detail

@@ -1,0 +1,126 @@
+#pragma once
+// The motion planner's insides (not an API): planner.cpp searches the starts and answers,
+// planner_candidates.cpp says where a vehicle may start, planner_evaluate.cpp how it drives
+// from there (path, speed, car following, overtaking, collisions).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "agents/motion/planner.hpp"
+
+namespace chatsim::agents::motion::detail {
+
+constexpr double kPi = std::numbers::pi;
+// Score a start loses for being held up behind traffic: all of it lost weighs as much as a
+// start 30 m from the distance asked for.
+constexpr double kSlowPenalty = 30.0;
+// Clearance kept from every other box (each side): recorded vehicles pass a kerbside cone at
+// less than half a metre.
+constexpr double kClearanceM = 0.15;
+// Score a start loses for driving off the mapped lanes before the clip ends.
+constexpr double kLeavesMapPenalty = 10.0;
+constexpr double kDeg = kPi / 180;
+
+inline double wrap(double a) { return std::remainder(a, 2 * kPi); }
+inline Eigen::Vector2d dir_of(double yaw) { return {std::cos(yaw), std::sin(yaw)}; }
+
+// The ego at frame 0: the frame positions and regions are spoken in.
+struct EgoFrame {
+  Eigen::Vector2d p;
+  double yaw = 0;
+  Eigen::Vector2d to_ego(const Eigen::Vector2d& world) const {
+    const Eigen::Vector2d d = world - p;
+    return {std::cos(yaw) * d.x() + std::sin(yaw) * d.y(), -std::sin(yaw) * d.x() + std::cos(yaw) * d.y()};
+  }
+};
+EgoFrame ego_frame(const scene::Scene& scene);
+
+struct Region {
+  double a_min = -180, a_max = 180;  // degrees, ego frame 0
+  bool back = false;                 // |angle| >= a_min instead
+  double d_min = 0, d_max = 1e9, d_pref = 15;
+};
+Region region_for(const std::string& placement, const MotionIntent& m, double widen = 1.0);
+bool in_region(const Region& r, const Eigen::Vector2d& pe);
+
+struct Candidate {
+  int lane = -1;
+  double s = 0;
+  int dir = 1;            // travel along (+1) or against (-1) the polyline
+  bool parked = false;    // evaluated as a parked vehicle
+  double score = 0;
+};
+
+struct Evaluated {
+  bool valid = false;
+  std::string invalid_reason;
+  std::vector<Pose2> poses;
+  int first_collision = -1;  // frame index, -1: none
+  std::string collides_with;
+  std::string action;
+  double speed = 0;
+  bool truncated = false;    // leaves the lane map before the clip ends
+  double slowed_to = -1;     // >= 0: traffic ahead holds it to this mean speed (m/s), well below the asked one
+  double slow_penalty = 0;   // added to the candidate's score for the speed lost behind traffic
+  std::string crosses_pedestrian;  // a pedestrian's recorded path runs through it (said in a note)
+};
+
+inline int legal_dir(const scene::Lane& lane) { return lane.direction == scene::TrafficDirection::Backward ? -1 : 1; }
+
+class Planner {
+ public:
+  Planner(const scene::Scene& scene, const PlanRequest& req);
+  PlanResult run();
+
+ private:
+  PlanResult run_once();
+  static std::string fmt(double v);
+  bool nothing_said_about_motion() const;
+  bool wants_parked(bool on_parking) const;
+  bool same_way_as_ego(int lane, double s) const;
+  double lane_hint_penalty(int lane, double s) const;
+
+  // Direction checks and preferences for one candidate travelling dir on lane.
+  std::optional<double> direction_score(int lane, double s, int dir, bool parked) const;
+  std::vector<Candidate> region_candidates() const;
+  std::vector<Candidate> region_candidates(bool moving_on_parking) const;
+  std::vector<Candidate> relative_candidates() const;
+  double desired_speed(bool parked) const;
+  Evaluated evaluate(const Candidate& c) const;
+
+  // The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that
+  // runs the way the candidate faces.
+  std::optional<int> pull_out_side(const Candidate& c) const;
+
+  // Held up behind slower traffic when the user asked for a speed: pass it in the lane beside,
+  // the user's way of driving (left first), when that lane lets it keep the speed.
+  void try_overtake(const Candidate& c, Evaluated& e, std::string& action) const;
+  std::vector<Pose2> poses_along(const Path& path, const std::vector<double>& arc, const std::string& action, bool reverse_yaw) const;
+
+  // Why the poses do not do the action within the clip, if they do not.
+  static std::optional<std::string> action_missing(const std::vector<Pose2>& poses, const std::string& action);
+
+  // Slows behind whatever is ahead on the path (car following), and says when that costs much
+  // of the speed asked for.
+  std::vector<double> follow_traffic(const Path& path, const std::vector<double>& free_arc, Evaluated& e) const;
+  static Evaluated invalid(Evaluated e, const std::string& why);
+  PlanResult finish(const Candidate& c, const Evaluated& e, PlanResult result) const;
+  PlanResult plan_without_lanes() const;
+  double lateral_of(int lane) const;  // signed ego-frame lateral offset of a lane near the ego
+
+  std::string describe_placement() const { return m_.placement.value_or("front"); }
+
+  const scene::Scene& scene_;
+  const PlanRequest& req_;
+  MotionIntent m_;
+  EgoFrame ego_;
+  std::vector<double> times_;
+  bool movable_ = true;
+  int ego_lane_ = -1;
+  double widen_ = 1.0;     // distance tolerance factor (see run)
+  bool collided_ = false;  // the last run_once accepted a collision
+};
+
+}  // namespace chatsim::agents::motion::detail
