@@ -187,7 +187,24 @@ def divided():
           lanes, east(0), 12, objects)
 
 
+def tee():
+    """Two-lane road (one each way) ending at a T junction at x=75: the cross road runs north-south."""
+    east, west = line(-60, 0, 71, 0), line(71, 3.5, -60, 3.5)
+    lanes = [lane("east", east), lane("west", west),
+             lane("cross_south", line(73.25, 90, 73.25, -90)), lane("cross_north", line(76.75, -90, 76.75, 90)),
+             lane("parking_left", line(-60, 6.5, 60, 6.5), 2.5, "parking")]
+    objects = [obj(1, "vehicle.car", track_along(east, 85, 6), "white"),
+               obj(2, "vehicle.car", track_along(west, 40, 9), "black"),
+               obj(3, "vehicle.truck", track_along(line(76.75, -90, 76.75, 90), 60, 7), "orange"),
+               obj(4, "vehicle.car", static(15, 6.5), "blue"), obj(5, "vehicle.car", static(35, 6.5), "red"),
+               obj(6, "vehicle.motorcycle", track_along(east, 40, 8), "green"),
+               obj(7, "human.pedestrian.adult", static(20, -4))]
+    write("blind-tee", "hand-made layout: two-lane road ending at a T junction, parking on the left",
+          lanes, east, 6, objects)
+
+
 if __name__ == "__main__":
     oneway()
     curve()
     divided()
+    tee()
