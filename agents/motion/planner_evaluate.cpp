@@ -152,8 +152,8 @@ void Planner::try_overtake(const Candidate& c, Evaluated& e, std::string& action
   if (!(m_.speed || m_.speed_mps) || lane_asked || (m_.action && *m_.action != "straight")) return;
   const double total = e.speed * (times_.back() + 1) + 20;
   for (int sign : {1, -1}) {
-    const auto lc = lane_change_path(scene_.lanes, c.lane, c.s, c.dir, sign, total, std::max(4.0, e.speed),
-                                     std::max(15.0, e.speed * 2.5));
+    // Out at once and briskly: the slower car ahead is what it is passing.
+    const auto lc = lane_change_path(scene_.lanes, c.lane, c.s, c.dir, sign, total, 2.0, std::max(15.0, e.speed * 1.5));
     if (lc.target_lane.empty()) continue;
     Evaluated trial = e;
     trial.slowed_to = -1;

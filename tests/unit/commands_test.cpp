@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "agents/core/agent_registry.hpp"
 #include "bench/command_grader.hpp"
@@ -15,7 +16,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void run_cases(const fs::path& cases_file, const fs::path& scene_dir) {
+// Cases the system cannot do as asked on that scene, each with what it must say instead: the
+// text its notes or unresolved reasons carry (so a silent failure still fails the test).
+using Exceptions = std::map<std::string, std::string>;
+
+bool says(const nlohmann::json& state, const std::string& text) {
+  for (const auto* list : {&state["notes"], &state["unresolved"]})
+    for (const auto& n : *list)
+      if ((n.is_string() ? n.get<std::string>() : n.value("reason", "")).find(text) != std::string::npos) return true;
+  return false;
+}
+
+void run_cases(const fs::path& cases_file, const fs::path& scene_dir, const Exceptions& exceptions = {}) {
   const auto scene = scene::load_scene(scene_dir);
   std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
   agents::manager::Manager manager(agents::local_caller(backend), backend);
@@ -28,25 +40,84 @@ void run_cases(const fs::path& cases_file, const fs::path& scene_dir) {
     const auto c = nlohmann::json::parse(line);
     nlohmann::json state;
     for (const auto& r : c["rounds"]) state = manager.chat(c["id"], scene_dir, r.get<std::string>()).edit_state;
-    for (const auto& r : bench::grade_case(scene, state, c["expect"]))
-      EXPECT_TRUE(r.pass) << c["id"].get<std::string>() << ": " << r.check << ": " << r.detail;
+    const auto id = c["id"].get<std::string>();
+    if (const auto e = exceptions.find(id); e != exceptions.end()) {
+      EXPECT_TRUE(says(state, e->second)) << id << " should say '" << e->second << "': " << state["notes"].dump()
+                                          << state["unresolved"].dump();
+    } else {
+      for (const auto& r : bench::grade_case(scene, state, c["expect"]))
+        EXPECT_TRUE(r.pass) << id << ": " << r.check << ": " << r.detail;
+    }
     ++n;
   }
   EXPECT_GT(n, 20);
 }
 
+// Accuracy of a case file whose cases name their scenes (a 'scene' path relative to the file),
+// and whether any added vehicle meets another.
+struct SetScore {
+  int passed = 0, total = 0, vehicles = 0, overlapping = 0;
+};
+
+SetScore score_set(const fs::path& cases_file) {
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  std::map<std::string, scene::Scene> scenes;
+  std::ifstream in(cases_file);
+  SetScore out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) continue;
+    const auto c = nlohmann::json::parse(line);
+    const auto dir = (cases_file.parent_path() / c["scene"].get<std::string>()).string();
+    if (!scenes.contains(dir)) scenes.emplace(dir, scene::load_scene(dir));
+    nlohmann::json state;
+    for (const auto& r : c["rounds"]) state = manager.chat(c["id"], dir, r.get<std::string>()).edit_state;
+    manager.reset(c["id"]);
+    bool ok = true;
+    for (const auto& r : bench::grade_case(scenes.at(dir), state, c["expect"])) ok = ok && r.pass;
+    out.passed += ok;
+    ++out.total;
+    const auto q = bench::motion_quality(scenes.at(dir), state);
+    out.vehicles += q.vehicles;
+    out.overlapping += q.vehicles - q.no_overlap;
+  }
+  return out;
+}
+
 }  // namespace
+
+// The dev layout's traffic makes two dev requests impossible without driving through a
+// recorded vehicle; the planner says so instead (it used to drive through them).
+const Exceptions kDevExceptions{
+    // Every start in the right front is behind a parked car: it starts nearby, and says so.
+    {"add-04", "starts a little further round"},
+    // "Make it faster" behind a slower car with both neighbouring lanes busy: it follows.
+    {"rev-03", "holds it to"}};
 
 TEST(Commands, DevCasesAllPass) {
   const auto dir = test_support::shared_commands_dir();
   if (!fs::exists(dir / "cases-dev.jsonl")) GTEST_SKIP() << "shared data absent: " << dir;
-  run_cases(dir / "cases-dev.jsonl", dir / "scene-layout-dev");
+  run_cases(dir / "cases-dev.jsonl", dir / "scene-layout-dev", kDevExceptions);
 }
 
 TEST(Commands, OwnParaphrasesAllPass) {
   const auto dir = test_support::shared_commands_dir();
   if (!fs::exists(dir / "scene-layout-dev")) GTEST_SKIP() << "shared data absent: " << dir;
-  run_cases(fs::path(CHATSIM_SOURCE_DIR) / "tests/data/commands-paraphrase.jsonl", dir / "scene-layout-dev");
+  run_cases(fs::path(CHATSIM_SOURCE_DIR) / "tests/data/commands-paraphrase.jsonl", dir / "scene-layout-dev",
+            {{"p-q12", "holds it to"},                       // faster behind the truck: it follows
+             {"p-r19", "no collision-free start matched"}});  // head-on with the car behind the ego
+}
+
+// The blind sets (tests/data/commands-blind-v2.jsonl, frozen before the fixes of #41, and v3,
+// frozen after them) stay above what they scored when this test was written, and no added
+// vehicle ever meets another at any frame.
+TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
+  for (const auto& [file, floor] : {std::pair{"commands-blind-v2.jsonl", 0.94}, std::pair{"commands-blind-v3.jsonl", 0.65}}) {
+    const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file);
+    ASSERT_GT(s.total, 50) << file;
+    EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
+    EXPECT_EQ(s.overlapping, 0) << file << ": " << s.overlapping << " of " << s.vehicles << " added vehicles meet another";
+  }
 }
 
 // Multi-round state: references across rounds, put back, and nothing lost after a refusal.
@@ -92,7 +163,7 @@ TEST(Commands, DevCasesPassInARotatedAndShiftedWorld) {
   s.lanes = scene::LaneMap(lanes);
   const auto moved = chatsim::scratch::dir() / ("chatsim-rotated-" + std::to_string(::getpid()));
   scene::save_scene(s, moved);
-  run_cases(dir / "cases-dev.jsonl", moved);
+  run_cases(dir / "cases-dev.jsonl", moved, kDevExceptions);
 }
 
 // Without a lane map, decisions still come, and what could not be done is said.
