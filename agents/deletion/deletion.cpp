@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 #include "agents/deletion/lane_relation.hpp"
@@ -35,6 +36,23 @@ int ordinal(const std::string& w) {
   if (w == "2nd") return 2;
   if (w == "3rd") return 3;
   return 0;
+}
+
+// "the tractor": an English noun the interpreter does not know where the thing to delete is
+// named; nothing in a scene is one, so the request is refused rather than guessed.
+std::optional<std::string> unknown_head(const Words& p) {
+  if (!lexicon::find_types(p).empty()) return std::nullopt;
+  for (const auto& word : p) {
+    static const char* skip[] = {"the", "a", "an", "that", "this", "those", "these", "every", "all", "each", "any", "my",
+                                 "too", "also", "well", "instead", "again", "please", "now", "then", "there", "here",
+                                 "thanks", "thank", "you", "anyway"};
+    if (std::find(std::begin(skip), std::end(skip), word) != std::end(skip) || lexicon::is_color_word(word) ||
+        text::is_number_word(word))
+      continue;
+    if (lexicon::is_domain_word(word) || !lexicon::is_english_word(word)) return std::nullopt;
+    return word;
+  }
+  return std::nullopt;
 }
 
 // The lane a phrase names, if any.
@@ -174,7 +192,12 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   for (const auto& p : phrases(w, begin, end)) {
     r.targets.push_back(parse_phrase(p, prev));
     prev = &r.targets.back();
+    if (!r.unsupported) r.unsupported = unknown_head(p);
   }
+  // "clear the opposite carriageway": clearing takes all it names.
+  if (text::has_any(w, {"clear", "empty", "wipe"}))
+    for (auto& t : r.targets)
+      if (!t.order && t.quantity == "one") t.quantity = "all";
   if (r.targets.empty() && text::has_any(w, {"everything", "all"})) {
     Selector s;
     s.category = "vehicle";

@@ -259,6 +259,13 @@ const std::unordered_set<std::string>& english_words() {
 
 }  // namespace
 
+bool is_domain_word(const std::string& w) {
+  const auto& known = known_words();
+  return std::binary_search(known.begin(), known.end(), w);
+}
+
+bool is_english_word(const std::string& w) { return english_words().contains(w); }
+
 void correct_typos(std::vector<std::string>& w) {
   const auto& english = english_words();
   if (english.empty()) return;  // without a word list every unknown word could be a name: change nothing

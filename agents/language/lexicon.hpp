@@ -54,4 +54,9 @@ bool is_color_word(const std::string& w);
 // nor one with two equally near domain words; without a word list nothing is changed.
 void correct_typos(std::vector<std::string>& words);
 
+// Whether the interpreter knows the word (words.json, the vehicle vocabulary, colours, nouns),
+// and whether it is English at all (the word lists; false without them).
+bool is_domain_word(const std::string& w);
+bool is_english_word(const std::string& w);
+
 }  // namespace chatsim::agents::lexicon

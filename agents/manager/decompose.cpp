@@ -39,8 +39,9 @@ std::vector<std::string> sentences(const std::string& s) {
   std::vector<std::string> out(1);
   for (size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
-    const bool decimal = c == '.' && i > 0 && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i - 1])) &&
-                         std::isdigit(static_cast<unsigned char>(s[i + 1]));
+    // "2.5 m", "ID.4": a full stop inside a word or number ends no sentence.
+    const bool decimal = c == '.' && i > 0 && i + 1 < s.size() && std::isalnum(static_cast<unsigned char>(s[i - 1])) &&
+                         std::isalnum(static_cast<unsigned char>(s[i + 1]));
     if ((c == '.' && !decimal) || c == '!' || c == '?' || c == ';' || c == '\n') {
       if (!out.back().empty()) out.emplace_back();
       continue;
@@ -53,7 +54,6 @@ std::vector<std::string> sentences(const std::string& s) {
   return out;
 }
 
-// Clauses: a sentence split before ", and VERB", "and VERB", ", VERB", "then VERB".
 // After a comma, "a mercedes van parked where it was" or "the view rotated 15 degrees": a
 // clause of its own although no verb starts it.
 bool names_new_part(const Words& w, size_t i) {
@@ -64,6 +64,7 @@ bool names_new_part(const Words& w, size_t i) {
   return mentions_vehicle(Words(w.begin() + long(i), w.begin() + long(std::min(w.size(), i + 5))));
 }
 
+// Clauses: a sentence split before ", and VERB", "and VERB", ", VERB", "then VERB".
 std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before) {
   std::vector<Words> out(1);
   for (size_t i = 0; i < w.size(); ++i) {
@@ -201,12 +202,15 @@ Instruction classify(const Words& c) {
   if (has_any(c, {"put back", "bring back", "restore", "undo the deletion", "undo the removal", "undelete",
                   "add back", "re-add", "readd", "put it back", "put them back", "undo", "add it back",
                   "add them back", "bring it back", "bring them back", "keep it", "keep that", "keep them",
-                  "never mind", "nevermind"})) {
+                  "never mind", "nevermind"}) ||
+      // "put the bus back", "bring the red car back"
+      ((first == "put" || first == "bring") && c.size() > 2 && c.back() == "back")) {
     in.kind = "restore";
     in.target = in.text;
     return in;
   }
-  if (has_any(c, {"traffic jam", "congestion", "gridlock", "stuck in traffic", "bumper to bumper", "jammed"})) {
+  if (has_any(c, {"traffic jam", "congestion", "gridlock", "stuck in traffic", "bumper to bumper", "jammed", "queue of",
+                  "tailback", "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
     in.kind = "traffic_jam";
     return in;
   }

@@ -353,8 +353,8 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
 
 void Manager::do_remove_added(Conversation& c, const Instruction& in, Round& round) {
   auto targets = resolve(c, in.target.empty() ? reference_in(in.text) : in.target);
-  if (targets.empty()) {
-    c.unresolved.push_back({{"instruction", in.text}, {"reason", "no added vehicle matches '" + in.target + "'"}});
+  if (targets.empty()) {  // "delete both parked cars" with nothing added: recorded ones are meant
+    do_delete(c, {"delete", in.text, "", 1}, round);
     return;
   }
   std::sort(targets.rbegin(), targets.rend());

@@ -91,9 +91,11 @@ std::optional<std::string> find_placement(const Words& w, bool has_ahead_distanc
                                        "ahead right", "right ahead", "forward right", "diagonally right"});
   if (left_front) return "left_front";
   if (right_front) return "right_front";
-  const bool left = has_any(w, {"my left", "our left", "left of me", "left of us", "left side", "on the left",
+  const bool left = has_any(w, {"my left", "our left", "left of me", "left of us", "left side", "on the left", "from the left",
+                                "from my left",
                                 "to the left", "at the left", "left hand side", "left-hand side", "beside me on the left"});
   const bool right = has_any(w, {"my right", "our right", "right of me", "right of us", "right side", "on the right",
+                                 "from the right", "from my right",
                                  "to the right", "at the right", "right hand side", "beside me on the right"});
   const bool back = has_any(w, {"behind me", "behind us", "behind", "at the back", "in the back", "rear",
                                 "back of me", "in back of", "to the back"});
@@ -103,6 +105,19 @@ std::optional<std::string> find_placement(const Words& w, bool has_ahead_distanc
   if (back) return "back";
   if (front) return "front";
   return std::nullopt;
+}
+
+// "turns left into the side street on the left": where it goes, not where it starts (nor on
+// which side it starts), so those words are blanked before lane and placement are read.
+void blank_turn_targets(Words& w) {
+  for (const char* p : {"into the side street", "into a side street", "into the side road", "into the cross street",
+                        "onto the side street", "onto the cross street", "down the side street", "into the street"})
+    for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p)) {
+      size_t end = at + text::words(p).size();
+      for (const char* side : {"on the left", "on the right", "to the left", "to the right", "on my left", "on my right"})
+        if (find_phrase(w, side, end) == end) end += text::words(side).size();
+      for (size_t k = at; k < end; ++k) w[k] = "_";
+    }
 }
 
 std::optional<std::string> find_lane(const Words& w_in) {
@@ -116,11 +131,6 @@ std::optional<std::string> find_lane(const Words& w_in) {
                   "lane of oncoming", "other side", "opposite side", "other carriageway", "opposite carriageway",
                   "the other way", "opposite direction", "other direction"}))
     return "oncoming";
-  // "turns right into the side street": where it goes, not where it starts.
-  for (const char* p : {"into the side street", "into a side street", "into the side road", "into the cross street",
-                        "onto the side street", "onto the cross street", "down the side street", "into the street"})
-    for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p))
-      for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
   if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane"}))
     return "cross";
   if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot"}))
@@ -264,6 +274,7 @@ MotionIntent parse_motion(const std::string& instruction) {
     break;
   }
   const auto change_to = lane_change_to(w);
+  blank_turn_targets(w);
   m.lane = find_lane(w);
   // Lane words must not also count as a side placement ("in the left lane" is not "on my left").
   Words without_lane = w;

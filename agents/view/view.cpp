@@ -48,20 +48,31 @@ ViewChange parse_view(const std::string& instruction) {
     else v.yaw_deg = v.yaw_deg.value_or(0) + sign * q.value;
   }
   // Translations: each distance with the direction word after it, else before it, else the verb.
-  const auto distances = text::quantities(w, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
+  // "three metres up and two to the left": a bare number after a distance takes its unit.
+  Words with_units = w;
+  for (size_t i = 1; i + 1 < with_units.size(); ++i) {
+    size_t used = 0;
+    if (with_units[i - 1] != "and" || !text::number_at(with_units, i, &used) || used != 1) continue;
+    if (!direction_word(with_units[i + 1]) && with_units[i + 1] != "to") continue;
+    const auto before = text::quantities(Words(with_units.begin(), with_units.begin() + long(i)),
+                                         {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
+    if (!before.empty()) with_units.insert(with_units.begin() + long(i) + 1, with_units[before.back().end - 1]);
+  }
+  const Words& wu = with_units;
+  const auto distances = text::quantities(wu, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
   for (size_t k = 0; k < distances.size(); ++k) {
     const auto& q = distances[k];
-    const std::string unit = w[q.end - 1];
+    const std::string unit = wu[q.end - 1];
     const double f = (unit == "feet" || unit == "foot" || unit == "ft") ? 0.3048 : (unit == "centimeters" || unit == "cm") ? 0.01 : 1.0;
     std::optional<std::pair<int, double>> dir;
-    const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : w.size();
+    const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : wu.size();
     for (size_t i = q.end; i < std::min(next_start, q.end + 4) && !dir; ++i) {
       // "further back": "further" only strengthens the direction word after it.
-      if ((w[i] == "further" || w[i] == "farther") && i + 1 < w.size() && direction_word(w[i + 1])) continue;
-      dir = direction_word(w[i]);
+      if ((wu[i] == "further" || wu[i] == "farther") && i + 1 < wu.size() && direction_word(wu[i + 1])) continue;
+      dir = direction_word(wu[i]);
     }
     const size_t prev_end = k > 0 ? distances[k - 1].end : 0;
-    for (size_t i = q.begin; i-- > prev_end && q.begin - i <= 5 && !dir;) dir = direction_word(w[i]);
+    for (size_t i = q.begin; i-- > prev_end && q.begin - i <= 5 && !dir;) dir = direction_word(wu[i]);
     if (!dir) continue;
     if (!v.translation_m) v.translation_m = std::array<double, 3>{0, 0, 0};
     (*v.translation_m)[size_t(dir->first)] += dir->second * q.value * f;
