@@ -35,6 +35,7 @@ AssetRequest parse_asset(const std::string& instruction) {
                                         "pursuing", "tailing", "overtake the", "overtakes the", "overtaking the",
                                         "pass the", "passing the",
                                         "toward the", "near the", "where the", "instead of the", "in place of the",
+                                        "between the", "between two", "among the",
                                         "behind the", "behind it", "in front of the", "in front of it", "ahead of the",
                                         "to the front of", "next to the", "beside the", "after the", "left of the",
                                         "right of the", "like the", "same as the"});

@@ -46,6 +46,8 @@ std::optional<std::string> unknown_head(const Words& p) {
     static const char* skip[] = {"the", "a", "an", "that", "this", "those", "these", "every", "all", "each", "any", "my",
                                  "too", "also", "well", "instead", "again", "please", "now", "then", "there", "here",
                                  "thanks", "thank", "you", "anyway"};
+    static const char* pronouns[] = {"whatever", "anything", "something", "whichever", "everything", "one", "ones"};
+    if (std::find(std::begin(pronouns), std::end(pronouns), word) != std::end(pronouns)) return std::nullopt;
     if (std::find(std::begin(skip), std::end(skip), word) != std::end(skip) || lexicon::is_color_word(word) ||
         text::is_number_word(word))
       continue;
@@ -100,13 +102,21 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
   const auto colors = lexicon::find_colors(p);
   if (!colors.empty()) s.color = lexicon::color_class(colors.front().rgb);
   s.lane = lane_words(p);
+  if (text::has_any(p, {"coming toward", "toward me", "toward us", "approaching", "coming at"})) s.approaching = true;
+  // "the truck behind it": placed by the object the phrase before named, not by the ego.
+  if (previous != nullptr) {
+    if (text::has_any(p, {"behind it", "behind that one", "after it"})) s.of_previous = "behind";
+    else if (text::has_any(p, {"in front of it", "ahead of it"})) s.of_previous = "front";
+    else if (text::has_any(p, {"next to it", "beside it", "alongside it"})) s.of_previous = "beside";
+  }
   if (text::has_any(p, {"following me", "following us", "tailing me", "tailing us"})) {
     s.lane = "ego";
     s.region = "back";
   }
   // "the left lane" names a lane, not a side: the side words only count outside a lane phrase.
   const bool side_is_lane = s.lane == "left" || s.lane == "right";
-  if (text::has_any(p, {"in front", "ahead", "front"})) s.region = "front";
+  if (s.of_previous) {
+  } else if (text::has_any(p, {"in front", "ahead", "front"})) s.region = "front";
   else if (text::has_any(p, {"behind", "back", "rear"})) s.region = "back";
   else if (!side_is_lane && text::has_any(p, {"left"})) s.region = "left";
   else if (!side_is_lane && text::has_any(p, {"right"})) s.region = "right";
@@ -140,13 +150,39 @@ struct Candidate {
   Eigen::Vector2d pe;   // ego frame 0
   double speed;
   LaneRelation lane;
+  double yaw = 0;       // heading, ego frame 0
 };
+
+// Of the matches, those behind, in front of or beside `anchor` (in its own heading), nearest first.
+std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, const Candidate& anchor,
+                                        const std::string& relation) {
+  std::vector<const Candidate*> out;
+  const double c = std::cos(anchor.yaw), s = std::sin(anchor.yaw);
+  for (const auto* x : m) {
+    if (x == &anchor) continue;
+    const Eigen::Vector2d d = x->pe - anchor.pe;
+    const double along = c * d.x() + s * d.y(), side = -s * d.x() + c * d.y();
+    const double lane_room = 3 + 0.2 * std::abs(along);  // a road may bend between them
+    const bool ok = relation == "behind" ? (along < -1 && std::abs(side) < lane_room)
+                    : relation == "front" ? (along > 1 && std::abs(side) < lane_room)
+                                          : (std::abs(along) < 6 && std::abs(side) > 1.5 && std::abs(side) < 7);
+    if (ok) out.push_back(x);
+  }
+  std::sort(out.begin(), out.end(), [&](const Candidate* a, const Candidate* b) {
+    return (a->pe - anchor.pe).norm() < (b->pe - anchor.pe).norm();
+  });
+  return out;
+}
 
 bool matches(const Selector& s, const Candidate& c) {
   if (!s.category.empty() && !c.object->has_category_prefix(s.category)) return false;
   if (s.color && (!c.object->color_rgb || lexicon::color_class(*c.object->color_rgb) != *s.color)) return false;
   if (s.moving && (c.speed > 0.5) != *s.moving) return false;
   if (s.lane && !has_lane(c.lane, *s.lane)) return false;
+  if (s.approaching) {  // its heading points at the ego's place
+    const bool toward = c.speed > 0.5 && -(std::cos(c.yaw) * c.pe.x() + std::sin(c.yaw) * c.pe.y()) > 0;
+    if (toward != *s.approaching) return false;
+  }
   if (s.region) {
     const double a = std::atan2(c.pe.y(), c.pe.x()) * 180 / std::numbers::pi;
     if (*s.region == "front" && !(c.pe.x() > 0 && std::abs(a) <= 60)) return false;
@@ -219,6 +255,8 @@ static nlohmann::json selector_json(const Selector& s) {
   if (s.color) j["color"] = *s.color;
   if (s.region) j["region"] = *s.region;
   if (s.lane) j["lane"] = *s.lane;
+  if (s.of_previous) j["of_previous"] = *s.of_previous;
+  if (s.approaching) j["approaching"] = *s.approaching;
   if (s.moving) j["moving"] = *s.moving;
   if (s.order) {
     j["order"] = *s.order;
@@ -236,6 +274,8 @@ static Selector selector_from(const nlohmann::json& j) {
   if (j.contains("color")) s.color = j["color"].get<std::string>();
   if (j.contains("region")) s.region = j["region"].get<std::string>();
   if (j.contains("lane")) s.lane = j["lane"].get<std::string>();
+  if (j.contains("of_previous")) s.of_previous = j["of_previous"].get<std::string>();
+  if (j.contains("approaching")) s.approaching = j["approaching"].get<bool>();
   if (j.contains("moving")) s.moving = j["moving"].get<bool>();
   if (j.contains("order")) s.order = j["order"].get<std::string>();
   s.nth = j.value("nth", 1);
@@ -276,14 +316,18 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
       const double dt = scene.frames[size_t(last)].timestamp_s - scene.frames[0].timestamp_s;
       if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
     }
-    cands.push_back({&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>())});
+    const double ego_turn = std::atan2(to_ego.linear()(1, 0), to_ego.linear()(0, 0));
+    cands.push_back({&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>()),
+                     p0->yaw + ego_turn});
   }
   std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.pe.norm() < b.pe.norm(); });
   std::vector<std::string> chosen;
+  const Candidate* last = nullptr;  // what the phrase before chose ("... and the truck behind it")
   for (const auto& t : r.targets) {
     std::vector<const Candidate*> m;
     for (const auto& c : cands)
       if (matches(t, c)) m.push_back(&c);
+    if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
     if (m.empty()) {
       out.problems.push_back("no " + describe(t).substr(t.quantity == "all" ? 6 : 4) + " in the scene" +
                              (removed.empty() ? "" : " (or it was already removed)"));
@@ -302,6 +346,7 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
       std::stable_sort(m.begin(), m.end(), [](const Candidate* a, const Candidate* b) {
         return std::abs(a->pe.y()) + 0.1 * a->pe.norm() < std::abs(b->pe.y()) + 0.1 * b->pe.norm();
       });
+    last = m.front();
     if (t.quantity == "all") {
       for (const auto* c : m) chosen.push_back(c->object->id);
     } else if (t.quantity == "n") {
@@ -315,6 +360,7 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
         continue;
       }
       chosen.push_back(m[k]->object->id);
+      last = m[k];
     }
   }
   for (const auto& e : r.except)

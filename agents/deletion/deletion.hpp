@@ -17,7 +17,9 @@ struct Selector {
   std::optional<std::string> color;     // basic colour class
   std::optional<std::string> region;    // front, back, left, right
   std::optional<std::string> lane;      // ego, left, middle, right, oncoming, cross, parking (lane_relation.hpp)
+  std::optional<std::string> of_previous;  // behind, front, beside: "... and the truck behind it"
   std::optional<bool> moving;
+  std::optional<bool> approaching;      // moving toward the ego ("the car coming toward us")
   std::string quantity = "one";         // one, all, n
   int n = 1;
   std::optional<std::string> order;     // nearest, farthest

@@ -182,12 +182,15 @@ void Manager::do_restore(Conversation& c, const Instruction& in, Round& round) {
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "nothing has been deleted in this conversation"}});
     return;
   }
-  const bool all = text::has_any(text::words(in.text), {"all", "every", "everything"});
+  const auto w = text::words(in.text);
+  const bool all = text::has_any(w, {"all", "every", "everything", "them"});
+  // "put both back": removals from the last, until two objects are back.
+  const bool both = text::has_any(w, {"both"});
   std::vector<std::string> back;
   while (!c.removal_batches.empty()) {
     back.insert(back.end(), c.removal_batches.back().begin(), c.removal_batches.back().end());
     c.removal_batches.pop_back();
-    if (!all) break;
+    if (!all && (!both || back.size() >= 2)) break;
   }
   for (const auto& id : back) c.removed.erase(std::remove(c.removed.begin(), c.removed.end(), id), c.removed.end());
   round.done.push_back("Put back " + std::to_string(back.size()) + " object(s).");

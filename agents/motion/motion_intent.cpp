@@ -41,6 +41,7 @@ void MotionIntent::merge(const MotionIntent& o) {
   if (o.direction) direction = o.direction;
   if (o.wrong_way) wrong_way = o.wrong_way;
   if (o.chase) chase = o.chase;
+  if (o.overtake) overtake = o.overtake;
 }
 
 nlohmann::json to_json(const MotionIntent& m) {
@@ -56,6 +57,7 @@ nlohmann::json to_json(const MotionIntent& m) {
   if (m.direction) j["direction"] = *m.direction;
   if (m.wrong_way) j["wrong_way"] = *m.wrong_way;
   if (m.chase) j["chase"] = *m.chase;
+  if (m.overtake) j["overtake"] = *m.overtake;
   if (m.distance_change_m) j["distance_change_m"] = *m.distance_change_m;
   if (!m.problems.empty()) j["problems"] = m.problems;
   return j;
@@ -76,6 +78,7 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   if (j.contains("direction")) m.direction = j["direction"].get<std::string>();
   if (j.contains("wrong_way")) m.wrong_way = j["wrong_way"].get<bool>();
   if (j.contains("chase")) m.chase = j["chase"].get<bool>();
+  if (j.contains("overtake")) m.overtake = j["overtake"].get<bool>();
   if (j.contains("distance_change_m")) m.distance_change_m = j["distance_change_m"].get<double>();
   if (j.contains("problems")) m.problems = j["problems"].get<std::vector<std::string>>();
   return m;

@@ -29,6 +29,7 @@ struct MotionIntent {
   std::optional<std::string> direction;   // toward, away
   std::optional<bool> wrong_way;
   std::optional<bool> chase;              // "chasing", "following": match the target's speed
+  std::optional<bool> overtake;           // "overtaking me": the ego's way, fast, passing it
   // Values said but outside what can be planned ("-5 m ahead", "900 km/h"), each with why;
   // the instruction is refused with these reasons instead of breaking the schema.
   std::vector<std::string> problems;

@@ -109,15 +109,21 @@ std::optional<std::string> find_placement(const Words& w, bool has_ahead_distanc
 
 // "turns left into the side street on the left": where it goes, not where it starts (nor on
 // which side it starts), so those words are blanked before lane and placement are read.
-void blank_turn_targets(Words& w) {
+// Returns the side the target street lies on, if said ("into the side street on the left").
+std::optional<std::string> blank_turn_targets(Words& w) {
+  std::optional<std::string> side_said;
   for (const char* p : {"into the side street", "into a side street", "into the side road", "into the cross street",
                         "onto the side street", "onto the cross street", "down the side street", "into the street"})
     for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p)) {
       size_t end = at + text::words(p).size();
       for (const char* side : {"on the left", "on the right", "to the left", "to the right", "on my left", "on my right"})
-        if (find_phrase(w, side, end) == end) end += text::words(side).size();
+        if (find_phrase(w, side, end) == end) {
+          end += text::words(side).size();
+          side_said = w[end - 1];
+        }
       for (size_t k = at; k < end; ++k) w[k] = "_";
     }
+  return side_said;
 }
 
 std::optional<std::string> find_lane(const Words& w_in) {
@@ -274,7 +280,8 @@ MotionIntent parse_motion(const std::string& instruction) {
     break;
   }
   const auto change_to = lane_change_to(w);
-  blank_turn_targets(w);
+  const bool turning = has_any(w, {"turn", "turns", "turning"});
+  const auto target_side = blank_turn_targets(w);
   m.lane = find_lane(w);
   // Lane words must not also count as a side placement ("in the left lane" is not "on my left").
   Words without_lane = w;
@@ -297,17 +304,24 @@ MotionIntent parse_motion(const std::string& instruction) {
   else if (has_any(w, {"far ahead", "far away", "in the distance", "far", "distant"}))
     m.distance_word = "far";
   m.action = change_to ? change_to : find_action(w);
+  // "turning into the side street on the left": the street's side is the turn's.
+  if (!m.action && turning && target_side) m.action = "turn_" + *target_side;
   // Out of a side street onto the road: which way it turns is the road's to say (the planner's).
   if (m.lane == "cross" && m.action != "static" &&
       has_any(w, {"coming out of", "pulling out of", "emerging from", "coming from", "out of the", "turning out of",
                   "joining from", "onto our road", "onto the road", "onto the main road", "join the road"}))
     m.action = "join";
   find_speed(w, m);
-  // Overtaking goes the ego's way, faster than it.
+  // Overtaking goes the ego's way, faster than it: from behind that is toward the ego's start,
+  // from beside or ahead away from it, so only the speed is said (the lanes give the way).
   if (has_any(w, {"overtake", "overtakes", "overtaking", "passing me", "passes me", "pass me", "passing us"})) {
-    m.direction = "away";
+    m.overtake = true;
     if (!m.speed && !m.speed_mps) m.speed = "fast";
   }
+  // "the same direction as me": the ego's way; ahead of the ego that is away from it.
+  if (!m.direction && has_any(w, {"same direction as me", "same direction as us", "same way as me", "same way as us",
+                                  "in the same direction", "the way i am going", "my way"}))
+    m.direction = m.placement == "back" ? "toward" : "away";
   // Moving words after "parked": it leaves (a revision "pull out and drive away" ends the parking).
   if (m.action == "static" && has_any(w, {"pull out", "pulls out", "pulling out", "drive off", "drives off",
                                           "drive away", "drives away", "driving away", "leave", "leaves", "set off"}))

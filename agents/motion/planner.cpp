@@ -66,6 +66,9 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
     m_.speed = "static";
   }
   if (!m_.relative && !m_.placement) m_.placement = m_.lane == "parking" ? "right_front" : "front";
+  // Overtaking from beside or ahead moves away from the ego's start; from behind it moves
+  // toward it, which the lanes' own direction already gives.
+  if (m_.overtake.value_or(false) && !m_.direction && m_.placement != "back") m_.direction = "away";
   // A side street on the left or right lies ahead of the ego on that side.
   if (m_.lane == "cross" && m_.placement == "left") m_.placement = "left_front";
   if (m_.lane == "cross" && m_.placement == "right") m_.placement = "right_front";
