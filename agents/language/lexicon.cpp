@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <unordered_set>
 #include <stdexcept>
+#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
@@ -114,8 +114,7 @@ const std::vector<Noun>& nouns() {
       {"person", "pedestrian", false},   {"persons", "pedestrian", true},    {"walkers", "pedestrian", true},
       {"objects", "object", true},       {"things", "object", true},         {"traffic", "car", true},
       {"cyclists", "bicycle", true},     {"cyclist", "bicycle", false},       {"tankers", "truck", true},
-      {"tanker", "truck", false},        {"lorries", "truck", true},          {"lorry", "truck", false},
-      {"motorbike rider", "motorcycle", false}};
+      {"tanker", "truck", false},        {"motorbike rider", "motorcycle", false}};
   return n;
 }
 

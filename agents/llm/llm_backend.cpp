@@ -6,6 +6,7 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 
 #include "agents/asset/asset_choice.hpp"
 #include "agents/deletion/deletion.hpp"
@@ -36,12 +37,18 @@ class OfflineBackend : public Backend {
   std::string name() const override { return "offline"; }
   nlohmann::json complete(const Prompt& prompt, const std::string& instruction) override {
     nlohmann::json out;
-    if (prompt.agent == "manager") out = manager::to_json(manager::decompose(instruction));
-    else if (prompt.agent == "view") out = view::to_json(view::parse_view(instruction));
-    else if (prompt.agent == "deletion") out = deletion::to_json(deletion::parse_deletion(instruction));
-    else if (prompt.agent == "asset") out = asset::to_json(asset::parse_asset(instruction));
-    else if (prompt.agent == "motion") out = motion::to_json(motion::parse_motion(instruction));
-    else throw BackendError("the offline interpreter has no part for agent '" + prompt.agent + "'");
+    try {
+      if (prompt.agent == "manager") out = manager::to_json(manager::decompose(instruction));
+      else if (prompt.agent == "view") out = view::to_json(view::parse_view(instruction));
+      else if (prompt.agent == "deletion") out = deletion::to_json(deletion::parse_deletion(instruction));
+      else if (prompt.agent == "asset") out = asset::to_json(asset::parse_asset(instruction));
+      else if (prompt.agent == "motion") out = motion::to_json(motion::parse_motion(instruction));
+      else throw BackendError("the offline interpreter has no part for agent '" + prompt.agent + "'");
+    } catch (const BackendError&) {
+      throw;
+    } catch (const std::runtime_error& e) {  // its vocabulary files missing or broken
+      throw BackendError(e.what());
+    }
     if (auto problem = validate(out, prompt.schema); !problem.empty())
       throw BackendError("offline interpreter produced JSON that breaks the " + prompt.agent + " schema: " + problem);
     return out;

@@ -315,10 +315,6 @@ Instruction classify(const Words& c) {
   return in;
 }
 
-}  // namespace
-
-namespace {
-
 // "an ambulance and two police cars rushing toward me": a part that ends with its noun takes the
 // words that follow the next part's noun (how and where they all go).
 void share_trailing_words(std::vector<Words>& parts) {
