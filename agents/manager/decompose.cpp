@@ -192,13 +192,10 @@ std::vector<Words> split_chase(const Words& c) {
   return {c};
 }
 
-Instruction classify(const Words& c) {
-  Instruction in;
-  in.text = text::join(c);
+// Clauses that are one thing as a whole: a restore, an abstract scene, "no parked cars", an empty
+// road. False when the clause is none of these.
+bool classify_whole(const Words& c, Instruction& in) {
   const std::string first = c.front();
-  auto starts = [&](const std::vector<std::string>& verbs) {
-    return std::find(verbs.begin(), verbs.end(), first) != verbs.end();
-  };
   if (has_any(c, {"put back", "bring back", "restore", "undo the deletion", "undo the removal", "undelete",
                   "add back", "re-add", "readd", "put it back", "put them back", "undo", "add it back",
                   "add them back", "bring it back", "bring them back", "keep it", "keep that", "keep them",
@@ -207,37 +204,48 @@ Instruction classify(const Words& c) {
       ((first == "put" || first == "bring") && c.size() > 2 && c.back() == "back")) {
     in.kind = "restore";
     in.target = in.text;
-    return in;
+    return true;
   }
   if (has_any(c, {"traffic jam", "congestion", "gridlock", "stuck in traffic", "bumper to bumper", "jammed", "queue of",
                   "tailback", "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
     in.kind = "traffic_jam";
-    return in;
+    return true;
   }
   if (has_any(c, {"busy road", "busy street", "heavy traffic", "rush hour", "lots of traffic", "crowded road",
                   "dense traffic", "busy", "more traffic", "lot of traffic"})) {
     in.kind = "busy_road";
-    return in;
+    return true;
   }
   // "no parked cars", "nothing parked anywhere": what should not be there is to be removed.
   if ((first == "no" || first == "nothing") && c.size() > 1 &&
       (mentions_vehicle(c) || has_any(c, {"parked", "moving", "stopped"}))) {
     in.kind = "delete";
     in.text = "remove all " + text::join(c, 1) + (mentions_vehicle(c) ? "" : " vehicles");
-    return in;
+    return true;
   }
   if (has_any(c, {"road empty", "empty road", "empty the road", "empty street", "street empty", "no cars", "no vehicles",
                   "clear the road", "clear the street", "deserted", "without any cars", "without cars", "without vehicles",
                   "no traffic", "road clear", "street clear", "road is empty"})) {
     in.kind = "delete";
     in.text = "remove all vehicles";
-    return in;
+    return true;
   }
   if (has_any(c, {"construction zone", "construction site", "road work", "road works", "roadwork", "roadworks", "work zone",
                   "construction area", "lane closure", "road closure", "close the lane", "closed lane"})) {
     in.kind = "construction_zone";
-    return in;
+    return true;
   }
+  return false;
+}
+
+Instruction classify(const Words& c) {
+  Instruction in;
+  in.text = text::join(c);
+  const std::string first = c.front();
+  auto starts = [&](const std::vector<std::string>& verbs) {
+    return std::find(verbs.begin(), verbs.end(), first) != verbs.end();
+  };
+  if (classify_whole(c, in)) return in;
   const bool vehicle = mentions_vehicle(c);
   const bool added_ref = refers_to_added(c);
   // "I'd like the bus gone", "I want the red car removed": a deletion said by its result.

@@ -241,49 +241,43 @@ void find_speed(const Words& w, MotionIntent& m) {
 constexpr double kMaxDistanceM = 500;
 constexpr double kMaxSpeedMps = 80;
 
-MotionIntent parse_motion(const std::string& instruction) {
-  Words w = text::words(instruction);
-  MotionIntent m;
-  m.relative = find_place_of(w);
-  if (!m.relative) m.relative = find_relative(w);
-  if (m.relative && has_any(text::words(instruction), {"chasing", "chase", "chases", "following", "follows", "follow",
-                                                       "tailing", "pursuing"}))
-    m.chase = true;
-  bool ahead_distance = false;
+namespace {
+
+// The first distance said, as a new distance, a change of it, or a problem; returns whether
+// it was followed by "ahead" (so a side placement lies ahead on that side).
+bool find_distance(const Words& w, MotionIntent& m) {
   for (const auto& q : text::quantities(w, {"meters", "meter", "m", "feet", "foot", "ft", "yards", "yard", "km",
                                             "kilometers", "kilometer", "miles", "mile"})) {
     // "50 kilometers per hour" is a speed (find_speed), not a distance.
     if (q.end < w.size() && (w[q.end] == "per" || w[q.end] == "an" || w[q.end] == "a")) continue;
     const std::string unit = w[q.end - 1];
-    const double f = (unit == "feet" || unit == "foot" || unit == "ft")      ? 0.3048
-                     : (unit == "yards" || unit == "yard")                  ? 0.9144
+    const double f = (unit == "feet" || unit == "foot" || unit == "ft")                ? 0.3048
+                     : (unit == "yards" || unit == "yard")                            ? 0.9144
                      : (unit == "km" || unit == "kilometers" || unit == "kilometer") ? 1000.0
-                     : (unit == "miles" || unit == "mile")                  ? 1609.344
-                                                                            : 1.0;
-    m.distance_m = q.value * f;
+                     : (unit == "miles" || unit == "mile")                            ? 1609.344
+                                                                                      : 1.0;
+    const double d = q.value * f;
     // "10 m further away", "5 m closer": a change of the distance it has, not a new one.
-    const size_t after = q.end;
-    if (after < w.size() && (w[after] == "further" || w[after] == "farther" || w[after] == "closer" ||
-                             w[after] == "nearer")) {
-      m.distance_change_m = (w[after] == "closer" || w[after] == "nearer") ? -*m.distance_m : *m.distance_m;
-      m.distance_m.reset();
-      break;
+    if (q.end < w.size() && (w[q.end] == "further" || w[q.end] == "farther" || w[q.end] == "closer" || w[q.end] == "nearer")) {
+      m.distance_change_m = (w[q.end] == "closer" || w[q.end] == "nearer") ? -d : d;
+      return false;
     }
-    if (*m.distance_m < 0 || *m.distance_m > kMaxDistanceM) {
-      m.problems.push_back(text::join(w, q.begin, q.end) + (*m.distance_m < 0 ? " is behind the camera" : " is farther than the " +
-                           std::to_string(int(kMaxDistanceM)) + " m a scene's lanes are planned over") +
+    if (d < 0 || d > kMaxDistanceM)
+      m.problems.push_back(text::join(w, q.begin, q.end) +
+                           (d < 0 ? " is behind the camera"
+                                  : " is farther than the " + std::to_string(int(kMaxDistanceM)) +
+                                        " m a scene's lanes are planned over") +
                            ": say a distance from 0 to " + std::to_string(int(kMaxDistanceM)) + " m");
-      m.distance_m.reset();
-    }
-    ahead_distance = q.end < w.size() && (w[q.end] == "ahead" || w[q.end] == "in" || w[q.end] == "forward" ||
-                                          w[q.end] == "away" || w[q.end] == "down");
-    break;
+    else
+      m.distance_m = d;
+    return q.end < w.size() && (w[q.end] == "ahead" || w[q.end] == "in" || w[q.end] == "forward" ||
+                                w[q.end] == "away" || w[q.end] == "down");
   }
-  const auto change_to = lane_change_to(w);
-  const bool turning = has_any(w, {"turn", "turns", "turning"});
-  const auto target_side = blank_turn_targets(w);
-  m.lane = find_lane(w);
-  // Lane words must not also count as a side placement ("in the left lane" is not "on my left").
+  return false;
+}
+
+// The placement, read with lane and turn words blanked ("in the left lane" is not "on my left").
+std::optional<std::string> placement_without_lane_words(const Words& w, bool ahead_distance) {
   Words without_lane = w;
   for (const char* p : {"left lane", "right lane", "lane on the left", "lane on the right", "lane to the left",
                         "lane to the right", "lane to my left", "lane to my right", "changes lanes to the left",
@@ -297,7 +291,52 @@ MotionIntent parse_motion(const std::string& instruction) {
                         "changes lanes left", "changes lanes right", "changing lanes left", "changing lanes right"})
     for (size_t at = find_phrase(without_lane, p); at != std::string::npos; at = find_phrase(without_lane, p))
       for (size_t k = 0; k < text::words(p).size(); ++k) without_lane[at + k] = "_";
-  if (!m.relative) m.placement = find_placement(without_lane, ahead_distance);
+  return find_placement(without_lane, ahead_distance);
+}
+
+// Which way it goes relative to the ego, whether against the traffic, and overtaking.
+void find_direction(const Words& w, MotionIntent& m) {
+  // Overtaking goes the ego's way, faster than it: from behind that is toward the ego's start,
+  // from beside or ahead away from it, so only the speed is said (the lanes give the way).
+  if (has_any(w, {"overtake", "overtakes", "overtaking", "passing me", "passes me", "pass me", "passing us"})) {
+    m.overtake = true;
+    if (!m.speed && !m.speed_mps) m.speed = "fast";
+  }
+  // "the same direction as me": the ego's way; ahead of the ego that is away from it.
+  if (has_any(w, {"same direction as me", "same direction as us", "same way as me", "same way as us",
+                  "in the same direction", "the way i am going", "my way"}))
+    m.direction = m.placement == "back" ? "toward" : "away";
+  else if (has_any(w, {"toward me", "toward us", "toward the camera", "toward the ego", "coming at me", "coming at us",
+                       "oncoming", "approaching", "head-on", "head on", "in my direction", "coming toward",
+                       "heading toward", "driving toward", "comes toward", "racing toward", "rushing toward",
+                       "speeding toward", "heading at me", "toward my car"}))
+    m.direction = "toward";
+  else if (has_any(w, {"away from me", "away from us", "driving away", "moving away", "away", "leaving"}))
+    m.direction = "away";
+  // On the other side of the road, unless told otherwise, it comes toward the ego.
+  else if (m.lane == "oncoming" && has_any(w, {"coming", "comes", "driving", "drives", "heading"}))
+    m.direction = "toward";
+  if (has_any(w, {"wrong way", "wrong direction", "against traffic", "against the traffic", "against the flow",
+                  "ghost driver", "wrong side", "contraflow", "against the direction"}))
+    m.wrong_way = true;
+}
+
+}  // namespace
+
+MotionIntent parse_motion(const std::string& instruction) {
+  Words w = text::words(instruction);
+  MotionIntent m;
+  m.relative = find_place_of(w);
+  if (!m.relative) m.relative = find_relative(w);
+  if (m.relative && has_any(text::words(instruction), {"chasing", "chase", "chases", "following", "follows", "follow",
+                                                       "tailing", "pursuing"}))
+    m.chase = true;
+  const bool ahead_distance = find_distance(w, m);
+  const auto change_to = lane_change_to(w);
+  const bool turning = has_any(w, {"turn", "turns", "turning"});
+  const auto target_side = blank_turn_targets(w);
+  m.lane = find_lane(w);
+  if (!m.relative) m.placement = placement_without_lane_words(w, ahead_distance);
   if (has_any(w, {"close front", "close to me", "near me", "nearby", "right in front", "just ahead", "close behind",
                   "close", "near"}))
     m.distance_word = "close";
@@ -312,33 +351,11 @@ MotionIntent parse_motion(const std::string& instruction) {
                   "joining from", "onto our road", "onto the road", "onto the main road", "join the road"}))
     m.action = "join";
   find_speed(w, m);
-  // Overtaking goes the ego's way, faster than it: from behind that is toward the ego's start,
-  // from beside or ahead away from it, so only the speed is said (the lanes give the way).
-  if (has_any(w, {"overtake", "overtakes", "overtaking", "passing me", "passes me", "pass me", "passing us"})) {
-    m.overtake = true;
-    if (!m.speed && !m.speed_mps) m.speed = "fast";
-  }
-  // "the same direction as me": the ego's way; ahead of the ego that is away from it.
-  if (!m.direction && has_any(w, {"same direction as me", "same direction as us", "same way as me", "same way as us",
-                                  "in the same direction", "the way i am going", "my way"}))
-    m.direction = m.placement == "back" ? "toward" : "away";
+  find_direction(w, m);
   // Moving words after "parked": it leaves (a revision "pull out and drive away" ends the parking).
   if (m.action == "static" && has_any(w, {"pull out", "pulls out", "pulling out", "drive off", "drives off",
                                           "drive away", "drives away", "driving away", "leave", "leaves", "set off"}))
     m.action = "straight";
-  if (!m.direction && has_any(w, {"toward me", "toward us", "toward the camera", "toward the ego", "coming at me", "coming at us",
-                  "oncoming", "approaching", "head-on", "head on", "in my direction", "coming toward", "heading toward",
-                  "driving toward", "comes toward", "toward the ego", "racing toward", "rushing toward", "speeding toward",
-                  "heading at me", "toward my car"}))
-    m.direction = "toward";
-  else if (!m.direction && has_any(w, {"away from me", "away from us", "driving away", "moving away", "away", "leaving"}))
-    m.direction = "away";
-  // On the other side of the road, unless told otherwise, it comes toward the ego.
-  if (m.lane == "oncoming" && !m.direction && has_any(w, {"coming", "comes", "driving", "drives", "heading"}))
-    m.direction = "toward";
-  if (has_any(w, {"wrong way", "wrong direction", "against traffic", "against the traffic", "against the flow",
-                  "ghost driver", "wrong side", "contraflow", "against the direction"}))
-    m.wrong_way = true;
   if (m.action == "static") m.speed = "static";
   if (m.speed_mps && (*m.speed_mps < 0 || *m.speed_mps > kMaxSpeedMps)) {
     m.problems.push_back("a speed of " + std::to_string(int(std::lround(*m.speed_mps * 3.6))) +

@@ -19,68 +19,70 @@ double Planner::desired_speed(bool parked) const {
   return speed_for(word);
 }
 
+// The action made concrete (cut in, pull out, into the ego's lane, join: a lane change or a
+// turn) and its path from the candidate's start; why not, when there is none.
+std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed, Manoeuvre& m) const {
+  const double total = speed * (times_.back() + 1) + 20;
+  const auto& map = scene_.lanes;
+  if (m.action == "cut_in") {
+    const double lat = ego_.to_ego(map.point_at(c.lane, c.s)).y();
+    if (std::abs(lat) < 1.5) return std::string("cutting in needs a start in a lane beside the ego's");
+    m.action = lat > 0 ? "lane_change_right" : "lane_change_left";
+  }
+  if (m.action == "straight" && speed > 0 && map.lanes()[size_t(c.lane)].type == "parking") {
+    // Moving off a parking lane: it pulls out into the driving lane beside it.
+    if (const auto side = pull_out_side(c)) m.action = *side > 0 ? "lane_change_left" : "lane_change_right";
+  }
+  if (m.action == "lane_change_ego") {
+    const double lat = ego_.to_ego(map.point_at(c.lane, c.s)).y();
+    if (std::abs(lat) < 1.5) return std::string("it starts in the ego's lane already");
+    m.action = lat > 0 ? "lane_change_right" : "lane_change_left";
+  }
+  if (m.action == "join") {  // out of a side street: whichever turn reaches a lane
+    const bool left = turn_path(map, c.lane, c.s, c.dir, 1, total).has_value();
+    m.action = left ? "turn_left" : "turn_right";
+  }
+  if (m.action == "static" || speed <= 0) {
+    m.action = "static";
+    speed = 0;
+    m.path = lane_path(map, c.lane, c.s, c.dir, 1.0);
+  } else if (m.action == "backward") {
+    m.path = lane_path(map, c.lane, c.s, -c.dir, total);
+    m.reverse_yaw = true;
+  } else if (m.action == "turn_left" || m.action == "turn_right") {
+    auto turn = turn_path(map, c.lane, c.s, c.dir, m.action == "turn_left" ? 1 : -1, total);
+    if (!turn)
+      return std::string("no crossing lane ahead to turn ") + (m.action == "turn_left" ? "left" : "right") +
+             " into on the lane map";
+    m.path = std::move(turn->path);
+    m.connector = std::move(turn->connector);
+  } else if (m.action == "lane_change_left" || m.action == "lane_change_right") {
+    // Pulling out of a parking lane starts at once and turns out sharply (the car ahead is close).
+    const bool pulling_out = map.lanes()[size_t(c.lane)].type == "parking";
+    const double start = pulling_out ? 0.5 : std::max(4.0, speed * 1.0);
+    const double length = pulling_out ? std::max(10.0, speed * 1.5) : std::max(15.0, speed * 3.0);
+    auto lc = lane_change_path(map, c.lane, c.s, c.dir, m.action == "lane_change_left" ? 1 : -1, total, start, length);
+    if (lc.target_lane.empty())
+      return std::string("no lane to the ") + (m.action == "lane_change_left" ? "left" : "right") +
+             " in the same direction to change into";
+    m.path = std::move(lc.path);
+  } else {
+    m.action = "straight";
+    m.path = lane_path(map, c.lane, c.s, c.dir, total);
+  }
+  return std::nullopt;
+}
+
 Evaluated Planner::evaluate(const Candidate& c) const {
   Evaluated e;
   e.speed = desired_speed(c.parked);
-  const double total = e.speed * (times_.back() + 1) + 20;
-  const auto& map = scene_.lanes;
-  std::string action = c.parked ? "static" : m_.action.value_or("straight");
-  Path path;
-  std::vector<Eigen::Vector2d> connector;  // a turn's junction curve: on the road even where unmapped
-  bool reverse_yaw = false;
-  if (action == "cut_in") {
-    const double lat = ego_.to_ego(map.point_at(c.lane, c.s)).y();
-    if (std::abs(lat) < 1.5) {
-      e.invalid_reason = "cutting in needs a start in a lane beside the ego's";
-      return e;
-    }
-    action = lat > 0 ? "lane_change_right" : "lane_change_left";
-  }
-  if (action == "straight" && e.speed > 0 && map.lanes()[size_t(c.lane)].type == "parking") {
-    // Moving off a parking lane: it pulls out into the driving lane beside it.
-    if (const auto side = pull_out_side(c)) action = *side > 0 ? "lane_change_left" : "lane_change_right";
-  }
-  if (action == "lane_change_ego") {
-    const double lat = ego_.to_ego(map.point_at(c.lane, c.s)).y();
-    if (std::abs(lat) < 1.5) return invalid(e, "it starts in the ego's lane already");
-    action = lat > 0 ? "lane_change_right" : "lane_change_left";
-  }
-  if (action == "join") {  // out of a side street: whichever turn reaches a lane
-    const bool left = turn_path(map, c.lane, c.s, c.dir, 1, total).has_value();
-    action = left ? "turn_left" : "turn_right";
-  }
-  if (action == "static" || e.speed <= 0) {
-    action = "static";
-    e.speed = 0;
-    path = lane_path(map, c.lane, c.s, c.dir, 1.0);
-  } else if (action == "backward") {
-    path = lane_path(map, c.lane, c.s, -c.dir, total);
-    reverse_yaw = true;
-  } else if (action == "turn_left" || action == "turn_right") {
-    auto turn = turn_path(map, c.lane, c.s, c.dir, action == "turn_left" ? 1 : -1, total);
-    if (!turn) {
-      e.invalid_reason = std::string("no crossing lane ahead to turn ") + (action == "turn_left" ? "left" : "right") +
-                         " into on the lane map";
-      return e;
-    }
-    path = std::move(turn->path);
-    connector = std::move(turn->connector);
-  } else if (action == "lane_change_left" || action == "lane_change_right") {
-    // Pulling out of a parking lane starts at once and turns out sharply (the car ahead is close).
-    const bool pulling_out = map.lanes()[size_t(c.lane)].type == "parking";
-    const double start = pulling_out ? 0.5 : std::max(4.0, e.speed * 1.0);
-    const double length = pulling_out ? std::max(10.0, e.speed * 1.5) : std::max(15.0, e.speed * 3.0);
-    auto lc = lane_change_path(map, c.lane, c.s, c.dir, action == "lane_change_left" ? 1 : -1, total, start, length);
-    if (lc.target_lane.empty()) {
-      e.invalid_reason = std::string("no lane to the ") + (action == "lane_change_left" ? "left" : "right") +
-                         " in the same direction to change into";
-      return e;
-    }
-    path = std::move(lc.path);
-  } else {
-    action = "straight";
-    path = lane_path(map, c.lane, c.s, c.dir, total);
-  }
+  Manoeuvre mv;
+  mv.action = c.parked ? "static" : m_.action.value_or("straight");
+  if (const auto why = manoeuvre(c, e.speed, mv)) return invalid(e, *why);
+  std::string& action = mv.action;
+  const Path& path = mv.path;
+  const auto& connector = mv.connector;
+  const bool reverse_yaw = mv.reverse_yaw;
   const auto free_arc = arc_lengths_at(path, e.speed, times_);
   const bool follows = action != "static" && !reverse_yaw;
   e.poses = poses_along(path, follows ? follow_traffic(path, free_arc, e) : free_arc, action, reverse_yaw);

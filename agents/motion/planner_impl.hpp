@@ -69,6 +69,14 @@ struct Evaluated {
 
 inline int legal_dir(const scene::Lane& lane) { return lane.direction == scene::TrafficDirection::Backward ? -1 : 1; }
 
+// What a vehicle does from a start, made concrete: the action and the path it drives.
+struct Manoeuvre {
+  std::string action;
+  Path path;
+  std::vector<Eigen::Vector2d> connector;  // a turn's junction curve: on the road even where unmapped
+  bool reverse_yaw = false;                // backing up: the body faces against the path
+};
+
 class Planner {
  public:
   Planner(const scene::Scene& scene, const PlanRequest& req);
@@ -89,6 +97,7 @@ class Planner {
   std::vector<Candidate> relative_candidates() const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
+  std::optional<std::string> manoeuvre(const Candidate& c, double& speed, Manoeuvre& m) const;
 
   // The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that
   // runs the way the candidate faces.
