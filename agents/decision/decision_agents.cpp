@@ -73,7 +73,9 @@ class ViewAgent : public DecisionAgent {
 json start_box(const scene::Scene& scene, const scene::ObjectTrack& o) {
   const auto& first = o.track.front();
   const auto& last = o.track.back();
-  const auto time_of = [&](int frame) { return frame >= 0 && size_t(frame) < scene.frames.size() ? scene.frames[size_t(frame)].timestamp_s : 0.0; };
+  const auto time_of = [&](int frame) {
+    return frame >= 0 && size_t(frame) < scene.frames.size() ? scene.frames[size_t(frame)].timestamp_s : 0.0;
+  };
   const double dt = time_of(last.frame) - time_of(first.frame);
   const double speed = dt > 0 ? (last.center - first.center).head<2>().norm() / dt : 0.0;
   return {{"id", o.id}, {"x", first.center.x()}, {"y", first.center.y()}, {"yaw", first.yaw},

@@ -216,7 +216,9 @@ const std::vector<std::string>& known_words() {
     std::vector<std::string> out;
     const auto file = vocabulary_file().parent_path() / "words.json";
     std::ifstream in(file);
-    if (!in) throw std::runtime_error("cannot read the word list " + file.string() + " (set CHATSIM_PROMPTS to the agents/prompts folder)");
+    if (!in)
+      throw std::runtime_error("cannot read the word list " + file.string() +
+                               " (set CHATSIM_PROMPTS to the agents/prompts folder)");
     try {
       const auto doc = nlohmann::json::parse(in);  // named: a temporary would die before the loop runs
       for (const auto& w : doc.at("words")) out.push_back(w.get<std::string>());
@@ -378,7 +380,8 @@ std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {
   static const char* kNouns[] = {"helicopter", "helicopters", "plane", "planes", "airplane", "aeroplane", "boat",
                                  "boats", "ship", "train", "trains", "tram", "tank", "tanks", "horse", "horses",
                                  "dog", "dogs", "cat", "cats", "cow", "cows", "dinosaur", "spaceship", "ufo",
-                                 "rocket", "submarine", "saucer", "saucers", "hovercraft", "blimp", "zeppelin", "elephant", "giraffe", "unicorn", "dragon", "tree", "trees",
+                                 "rocket", "submarine", "saucer", "saucers", "hovercraft", "blimp", "zeppelin",
+                                 "elephant", "giraffe", "unicorn", "dragon", "tree", "trees",
                                  "house", "houses", "building", "buildings"};
   for (const auto& word : w)
     for (const char* n : kNouns)
