@@ -73,7 +73,9 @@ AssetRequest parse_asset(const std::string& instruction) {
     for (size_t i = at; i-- > 0 && at - i <= 4;) {
       size_t used = 0;
       const auto v = text::number_at(w, i, &used);
-      if (v && i + used <= at && *v >= 1 && std::floor(*v) == *v) {
+      // "forward by 20 ... van": an amount after "by", "at" or "to" counts metres, not vans.
+      const bool amount = i > 0 && (w[i - 1] == "by" || w[i - 1] == "at" || w[i - 1] == "to");
+      if (v && !amount && i + used <= at && *v >= 1 && std::floor(*v) == *v) {
         r.count = int(*v);
         break;
       }

@@ -7,20 +7,27 @@
 namespace chatsim::agents::motion {
 namespace {
 
+constexpr double kWindowM = 80.0;  // how far ahead along the path a leader is looked for
+
 // Where a box stands along the path: arc length and sideways offset of its centre (the nearest
 // path point within `window` metres ahead of `from`), or nullopt past the path's end.
 std::optional<std::pair<double, double>> on_path(const Path& path, const Eigen::Vector2d& p, double from, double window) {
-  double best_d2 = std::numeric_limits<double>::infinity(), best_s = 0;
-  const auto lo = std::lower_bound(path.s.begin(), path.s.end(), from);
-  for (auto it = lo; it != path.s.end() && *it <= from + window; ++it) {
-    const double d2 = (path.points[size_t(it - path.s.begin())] - p).squaredNorm();
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best_s = *it;
-    }
-  }
-  if (!std::isfinite(best_d2) || best_s >= path.length() - 1e-6) return std::nullopt;
-  return std::make_pair(best_s, std::sqrt(best_d2));
+  const size_t lo = size_t(std::lower_bound(path.s.begin(), path.s.end(), from) - path.s.begin());
+  size_t hi = size_t(std::upper_bound(path.s.begin(), path.s.end(), from + window) - path.s.begin());
+  if (lo >= hi) return std::nullopt;
+  // Every 8th point first, then the points around the nearest of those: this runs for every
+  // obstacle, frame and candidate start.
+  constexpr size_t kStride = 8;
+  const auto d2_at = [&](size_t i) { return (path.points[i] - p).squaredNorm(); };
+  size_t best = lo;
+  for (size_t i = lo; i < hi; i += kStride)
+    if (d2_at(i) < d2_at(best)) best = i;
+  const size_t from_i = best > lo + kStride ? best - kStride : lo;
+  hi = std::min(hi, best + kStride + 1);
+  for (size_t i = from_i; i < hi; ++i)
+    if (d2_at(i) < d2_at(best)) best = i;
+  if (path.s[best] >= path.length() - 1e-6) return std::nullopt;
+  return std::make_pair(path.s[best], std::sqrt(d2_at(best)));
 }
 
 struct Leader {
@@ -34,7 +41,10 @@ Leader nearest_leader(const Path& path, double s, const Eigen::Vector3d& own, co
   for (const auto& o : others) {
     if (frame >= o.poses->size() || !(*o.poses)[frame]) continue;
     const Pose2& q = *(*o.poses)[frame];
-    const auto at = on_path(path, {q.x, q.y}, s, 80.0);
+    // Far from where the vehicle is now: not within the window ahead (a cheap test first; this
+    // runs for every obstacle, frame and candidate start).
+    if ((Eigen::Vector2d(q.x, q.y) - path.at(s)).squaredNorm() > kWindowM * kWindowM * 1.1) continue;
+    const auto at = on_path(path, {q.x, q.y}, s, kWindowM);
     if (!at || at->first <= s) continue;
     if (at->second > (own.y() + o.size_lwh.y()) / 2 + 0.3) continue;  // beside the path, not on it
     const double gap = at->first - s - (own.x() + o.size_lwh.x()) / 2;

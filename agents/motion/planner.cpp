@@ -11,6 +11,10 @@ namespace chatsim::agents::motion {
 using detail::dir_of;
 using detail::kPi;
 
+namespace {
+constexpr size_t kMaxCandidates = 150;
+}  // namespace
+
 double speed_for(const std::string& word) {
   if (word == "slow") return 4.0;
   if (word == "fast") return 14.0;
@@ -123,7 +127,9 @@ PlanResult Planner::run_once() {
     return ce.first.score + ce.second.slow_penalty + (ce.second.truncated ? kLeavesMapPenalty : 0.0);
   };
   std::string invalid_reason;
-  const size_t limit = std::min<size_t>(cands.size(), 400);
+  // The best-scored starts only: each costs a path, car following and a collision check over the
+  // clip, and a request nothing satisfies would otherwise try every lane metre (seconds).
+  const size_t limit = std::min<size_t>(cands.size(), kMaxCandidates);
   for (size_t i = 0; i < limit; ++i) {
     Evaluated e = evaluate(cands[i]);
     if (!e.valid) {
