@@ -76,6 +76,33 @@ std::optional<std::string> lane_words(const Words& p) {
   return std::nullopt;
 }
 
+// "the car parked closest to the police car", "the van behind the bus": the head, the object it
+// is placed by, and how. None when no object ("the") follows the relation word.
+struct Relation {
+  Words head, reference;
+  std::string relation;
+};
+std::optional<Relation> split_relation(const Words& p) {
+  static const std::pair<const char*, const char*> kRelations[] = {
+      {"closest to", "near"}, {"nearest to", "near"}, {"nearest", "near"},    {"closest", "near"},
+      {"close to", "near"},   {"near", "near"},       {"next to", "beside"},  {"beside", "beside"},
+      {"alongside", "beside"}, {"behind", "behind"},  {"in front of", "front"}, {"ahead of", "front"}};
+  for (const auto& [phrase, relation] : kRelations) {
+    const size_t at = text::find_phrase(p, phrase);
+    const size_t after = at + text::words(phrase).size();
+    if (at == std::string::npos || at == 0 || after >= p.size() || (p[after] != "the" && p[after] != "that")) continue;
+    const Words reference(p.begin() + long(after), p.end());
+    const auto types = lexicon::find_types(reference);
+    if (types.empty() || types.front().begin > 3) continue;
+    // "the bus stop", "the parking lane": a place, not an object.
+    const size_t noun_end = types.front().end;
+    if (noun_end < reference.size() && text::has_any({reference[noun_end]}, {"stop", "bay", "lane", "station", "shelter"}))
+      continue;
+    return Relation{Words(p.begin(), p.begin() + long(at)), reference, relation};
+  }
+  return std::nullopt;
+}
+
 Selector parse_phrase(const Words& p, const Selector* previous) {
   Selector s;
   const auto types = lexicon::find_types(p);
@@ -125,6 +152,12 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
   else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling"})) s.moving = true;
   if (text::has_any(p, {"closest", "nearest", "near", "close"})) s.order = "nearest";
   else if (text::has_any(p, {"farthest", "furthest", "far", "most distant"})) s.order = "farthest";
+  // "the last parked car", "the second to last truck": counted from the far end of the row.
+  else if (text::has_any(p, {"last", "penultimate", "final"})) s.order = "farthest";
+  if (text::has_any(p, {"penultimate"})) {
+    s.nth = 2;
+    s.quantity = "one";
+  }
   for (size_t i = 0; i < p.size(); ++i)
     if (int k = ordinal(p[i])) {
       s.nth = k;
@@ -165,6 +198,7 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
     const double lane_room = 3 + 0.2 * std::abs(along);  // a road may bend between them
     const bool ok = relation == "behind" ? (along < -1 && std::abs(side) < lane_room)
                     : relation == "front" ? (along > 1 && std::abs(side) < lane_room)
+                    : relation == "near"  ? true
                                           : (std::abs(along) < 6 && std::abs(side) > 1.5 && std::abs(side) < 7);
     if (ok) out.push_back(x);
   }
@@ -226,6 +260,18 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   }
   const Selector* prev = nullptr;
   for (const auto& p : phrases(w, begin, end)) {
+    if (const auto rel = split_relation(p)) {
+      Selector anchor = parse_phrase(rel->reference, nullptr);
+      anchor.anchor_only = true;
+      anchor.quantity = "one";
+      r.targets.push_back(anchor);
+      Selector head = parse_phrase(rel->head, nullptr);
+      head.of_previous = rel->relation;
+      r.targets.push_back(head);
+      prev = &r.targets.back();
+      if (!r.unsupported) r.unsupported = unknown_head(rel->head);
+      continue;
+    }
     r.targets.push_back(parse_phrase(p, prev));
     prev = &r.targets.back();
     if (!r.unsupported) r.unsupported = unknown_head(p);
@@ -256,6 +302,7 @@ static nlohmann::json selector_json(const Selector& s) {
   if (s.region) j["region"] = *s.region;
   if (s.lane) j["lane"] = *s.lane;
   if (s.of_previous) j["of_previous"] = *s.of_previous;
+  if (s.anchor_only) j["anchor_only"] = true;
   if (s.approaching) j["approaching"] = *s.approaching;
   if (s.moving) j["moving"] = *s.moving;
   if (s.order) {
@@ -275,6 +322,7 @@ static Selector selector_from(const nlohmann::json& j) {
   if (j.contains("region")) s.region = j["region"].get<std::string>();
   if (j.contains("lane")) s.lane = j["lane"].get<std::string>();
   if (j.contains("of_previous")) s.of_previous = j["of_previous"].get<std::string>();
+  s.anchor_only = j.value("anchor_only", false);
   if (j.contains("approaching")) s.approaching = j["approaching"].get<bool>();
   if (j.contains("moving")) s.moving = j["moving"].get<bool>();
   if (j.contains("order")) s.order = j["order"].get<std::string>();
@@ -347,6 +395,7 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
         return std::abs(a->pe.y()) + 0.1 * a->pe.norm() < std::abs(b->pe.y()) + 0.1 * b->pe.norm();
       });
     last = m.front();
+    if (t.anchor_only) continue;
     if (t.quantity == "all") {
       for (const auto* c : m) chosen.push_back(c->object->id);
     } else if (t.quantity == "n") {

@@ -123,7 +123,7 @@ struct Make {
   std::string brand, type;
   std::vector<std::vector<std::string>> names;
   std::vector<std::pair<std::vector<std::string>, std::string>> models;  // longest first
-  bool ambiguous = false;
+  std::vector<std::vector<std::string>> ambiguous;  // names that are also ordinary words ("seat", not "cupra")
 };
 
 std::filesystem::path vocabulary_file() {
@@ -141,8 +141,13 @@ std::vector<Make> load_makes() {
   try {
     const auto doc = nlohmann::json::parse(in);
     for (const auto& m : doc.at("makes")) {
-      Make make{m.at("make"), m.at("type"), {}, {}, m.value("ambiguous", false)};
+      Make make{m.at("make"), m.at("type"), {}, {}, {}};
       for (const auto& n : m.at("names")) make.names.push_back(text::words(n.get<std::string>()));
+      // "ambiguous": true (every name) or the list of names that are also ordinary words.
+      const auto amb = m.value("ambiguous", nlohmann::json(false));
+      if (amb.is_boolean() && amb.get<bool>()) make.ambiguous = make.names;
+      if (amb.is_array())
+        for (const auto& n : amb) make.ambiguous.push_back(text::words(n.get<std::string>()));
       for (const auto& [model, type] : m.at("models").items()) make.models.emplace_back(text::words(model), type);
       std::stable_sort(make.models.begin(), make.models.end(),
                        [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
@@ -359,13 +364,18 @@ std::vector<BrandMention> find_brands(const std::vector<std::string>& w) {
   for (size_t at = 0; at < w.size(); ++at) {
     for (const auto& make : makes()) {
       size_t n = 0;
+      const std::vector<std::string>* matched = nullptr;
       for (const auto& name : make.names)
-        if (words_at(w, at, name)) n = std::max(n, name.size());
+        if (words_at(w, at, name) && name.size() > n) {
+          n = name.size();
+          matched = &name;
+        }
       if (n == 0) continue;
+      const bool ambiguous = std::find(make.ambiguous.begin(), make.ambiguous.end(), *matched) != make.ambiguous.end();
       const auto model = model_after(make, w, at + n);
       const bool noun_follows = at + n < w.size() && !find_types({w[at + n]}).empty();
       // A make that is also an ordinary word ("man", "seat") counts only before a model or a noun.
-      if (make.ambiguous && !model && !noun_follows) continue;
+      if (ambiguous && !model && !noun_follows) continue;
       if (make.brand == "mini" && at + n < w.size() && (w[at + n] == "van" || w[at + n] == "bus")) continue;
       BrandMention m{make.brand, model ? model->second : make.type, at, at + n + (model ? model->first : 0)};
       out.push_back(m);

@@ -28,7 +28,7 @@ bool starts_instruction(const std::string& w) {
   for (const auto* list : {&add_verbs(), &delete_verbs()})
     if (std::find(list->begin(), list->end(), w) != list->end()) return true;
   static const char* v[] = {"move", "shift", "raise", "lower", "rotate", "turn", "look", "pan", "tilt", "make",
-                            "change", "modify", "set", "paint", "restore", "undo", "simulate", "ego", "swap", "replace"};
+                            "change", "modify", "set", "paint", "repaint", "respray", "recolor", "restore", "undo", "simulate", "ego", "swap", "replace"};
   for (const char* x : v)
     if (w == x) return true;
   return false;
@@ -230,6 +230,12 @@ bool classify_whole(const Words& c, Instruction& in) {
     in.text = "remove all vehicles";
     return true;
   }
+  if (has_any(c, {"road block", "roadblock", "road blockade", "checkpoint", "block the road", "block off the road",
+                  "block the street", "block off the street", "barricade the road", "barricade the street",
+                  "police barricade", "police cordon", "cordon off"})) {
+    in.kind = "road_block";
+    return true;
+  }
   if (has_any(c, {"construction zone", "construction site", "road work", "road works", "roadwork", "roadworks", "work zone",
                   "construction area", "lane closure", "road closure", "close the lane", "closed lane"})) {
     in.kind = "construction_zone";
@@ -238,7 +244,58 @@ bool classify_whole(const Words& c, Instruction& in) {
   return false;
 }
 
-Instruction classify(const Words& c) {
+// "a navy suv should be added 40 m ahead", "i want a van placed behind me": the passive of an
+// addition said in the active ("add a navy suv 40 m ahead"). The words unchanged otherwise.
+Words active_addition(const Words& c) {
+  static const char* participles[] = {"added", "placed", "put", "inserted", "spawned", "created", "included",
+                                      "introduced", "positioned", "dropped", "generated"};
+  for (size_t i = 1; i < c.size(); ++i) {
+    if (std::none_of(std::begin(participles), std::end(participles), [&](const char* p) { return c[i] == p; })) continue;
+    const bool be = c[i - 1] == "be" || c[i - 1] == "been" || c[i - 1] == "being" || c[i - 1] == "get" || c[i - 1] == "is" ||
+                    c[i - 1] == "are";
+    // "want a van placed": a vehicle noun right before, not "the car i added" nor "the added car".
+    const Words head(c.begin(), c.begin() + long(i));
+    // "the added car should be placed ahead", "it should be put behind": a revision, not new.
+    if (has_any(head, {"the", "that", "this", "it", "them", "they", "its"})) continue;
+    const auto types = lexicon::find_types(head);
+    const bool wanted = !types.empty() && types.back().end == i && has_any(c, {"want", "need", "like", "have", "get"});
+    if (!be && !wanted) continue;
+    size_t from = i;
+    while (from > 0 && (c[from - 1] == "be" || c[from - 1] == "been" || c[from - 1] == "being" || c[from - 1] == "get" ||
+                        c[from - 1] == "is" || c[from - 1] == "are" || c[from - 1] == "should" || c[from - 1] == "must" ||
+                        c[from - 1] == "shall" || c[from - 1] == "will" || c[from - 1] == "would" || c[from - 1] == "to" ||
+                        c[from - 1] == "needs" || c[from - 1] == "has" || c[from - 1] == "have"))
+      --from;
+    Words out{"add"};
+    size_t start = 0;
+    // "i want / we need / i'd like ... a van placed": the wish goes too.
+    for (size_t k = 0; k < from; ++k)
+      if (c[k] == "a" || c[k] == "an" || c[k] == "some" || c[k] == "another" || text::is_number_word(c[k]) ||
+          lexicon::find_types(Words(c.begin() + long(k), c.begin() + long(from))).size() > 0) {
+        start = k;
+        break;
+      }
+    out.insert(out.end(), c.begin() + long(start), c.begin() + long(from));
+    out.insert(out.end(), c.begin() + long(i) + 1, c.end());
+    return out;
+  }
+  return c;
+}
+
+// "a pickup should come out of the side street": a vehicle named with "a" as the subject is new.
+bool indefinite_vehicle_subject(const Words& c) {
+  if (c.size() < 2 || !(c[0] == "a" || c[0] == "an" || c[0] == "another" || (text::is_number_word(c[0]) && c[0] != "half")))
+    return false;
+  if (c[1] == "of" || c[1] == "bit" || c[1] == "little") return false;  // "one of the cars", "a bit further"
+  const auto types = lexicon::find_types(c);
+  const auto brands = lexicon::find_brands(c);
+  const bool vehicle_type = !types.empty() && types.front().type.type != "pedestrian";
+  const size_t noun = std::min(vehicle_type ? types.front().begin : c.size(), brands.empty() ? c.size() : brands.front().begin);
+  return noun >= 1 && noun <= 4 && noun < c.size();  // "2 m forward": the number itself is no model name
+}
+
+Instruction classify(const Words& c_in) {
+  const Words c = active_addition(c_in);
   Instruction in;
   in.text = text::join(c);
   const std::string first = c.front();
@@ -271,6 +328,10 @@ Instruction classify(const Words& c) {
     in.text = t;
     return in;
   }
+  if (indefinite_vehicle_subject(c) && !has_any(c, {"what", "why", "how", "who", "which"})) {
+    in.kind = "add";
+    return in;
+  }
   if (starts(add_verbs())) {
     // "add a flying saucer above the bus": what is to be added is no vehicle, whatever follows.
     const auto bad = lexicon::unsupported_noun(c);
@@ -288,9 +349,13 @@ Instruction classify(const Words& c) {
       in.target = "it";
     return in;
   }
+  // "look behind", "turn around": with no vehicle named, the view turns.
+  const bool view_idiom = !vehicle && !added_ref &&
+                          has_any(c, {"look behind", "look back", "look backward", "look backwards", "turn around",
+                                      "face backward", "face backwards", "look the other way", "face the other way"});
   const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
-                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"});
-  const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "set", "paint", "recolor", "turn",
+                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom;
+  const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "set", "paint", "repaint", "respray", "recolor", "color", "turn",
                                        "move", "speed", "slow", "swap", "replace", "switch", "should", "park", "stop",
                                        "pull", "reverse", "accelerate", "brake"});
   // "the white one", "the second one": a vehicle named by what tells it apart.
@@ -341,7 +406,8 @@ std::string reference_in(const std::string& clause) {
   // "make it chase the red car": the object right after the verb is what changes.
   if (w.size() > 1 && (w[1] == "it" || w[1] == "them") &&
       (w[0] == "make" || w[0] == "have" || w[0] == "let" || w[0] == "turn" || w[0] == "move" || w[0] == "park" ||
-       w[0] == "change" || w[0] == "paint" || w[0] == "set"))
+       w[0] == "change" || w[0] == "paint" || w[0] == "repaint" || w[0] == "respray" || w[0] == "recolor" ||
+       w[0] == "color" || w[0] == "set"))
     return w[1];
   if (text::has_any(w, {"both of them", "both", "all of them", "them", "they", "all the added", "all added", "each of them"}))
     return text::has_any(w, {"both"}) ? "both" : "them";

@@ -10,7 +10,8 @@
 namespace chatsim::agents::manager {
 
 struct Instruction {
-  // view, delete, restore, add, revise, remove_added, traffic_jam, busy_road, construction_zone, unclear
+  // view, delete, restore, add, revise, remove_added, traffic_jam, busy_road, construction_zone, road_block,
+  // unclear
   std::string kind;
   std::string text;     // the words of this instruction, as said
   std::string target;   // revise/remove_added/restore: the reference ("it", "the porsche"); add: copy source

@@ -119,7 +119,9 @@ void Manager::run_instruction(Conversation& c, const Instruction& in, Round& rou
   else if (in.kind == "add") do_add(c, in, round);
   else if (in.kind == "revise") do_revise(c, in, round);
   else if (in.kind == "remove_added") do_remove_added(c, in, round);
-  else if (in.kind == "traffic_jam" || in.kind == "busy_road" || in.kind == "construction_zone") do_abstract(c, in, round);
+  else if (in.kind == "traffic_jam" || in.kind == "busy_road" || in.kind == "construction_zone" ||
+           in.kind == "road_block")
+    do_abstract(c, in, round);
   else if (!in.target.empty())  // decompose named what cannot be added
     c.unresolved.push_back({{"instruction", in.text},
                             {"reason", "a " + in.target + " is not something that can be added to a road scene "
@@ -330,9 +332,9 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
       keep.erase("relative");
     }
     // Same place unless told otherwise: a revision of how it moves keeps where it starts.
-    if (!keep.contains("placement") && !keep.contains("relative") && !keep.contains("distance_m") &&
-        !v.intent.contains("relative") && v.resolved.contains("distance_m"))
-      keep["distance_m"] = v.resolved["distance_m"];
+    const bool keeps_start = !keep.contains("placement") && !keep.contains("relative") && !keep.contains("distance_m") &&
+                             !v.intent.contains("relative") && v.resolved.contains("distance_m");
+    if (keeps_start) keep["distance_m"] = v.resolved["distance_m"];
     json args{{"base_intent", v.intent}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},
               {"type", v.asset["type"]}, {"removed", c.removed}, {"others", others_json(c, t)}};
     json merged_rel = said.contains("relative") ? said["relative"] : (said.contains("placement") ? json() : v.intent.value("relative", json()));
@@ -346,7 +348,18 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
         args["intent"].erase("relative");
       }
     }
-    if (plan_motion(c, v, args, in.text)) round.done.push_back("Revised " + v.id + ".");
+    const size_t unresolved_before = c.unresolved.size();
+    bool planned = plan_motion(c, v, args, in.text);
+    if (!planned && keeps_start) {
+      // Where it starts was ours to keep, not the user's: "make it go slower" may need a start
+      // where the traffic behind does not catch up with it.
+      c.unresolved.erase(c.unresolved.begin() + long(unresolved_before), c.unresolved.end());
+      args["intent"].erase("distance_m");
+      planned = plan_motion(c, v, args, in.text);
+      if (planned) c.notes.push_back(v.id + ": starts at a new place (" + v.resolved.value("distance_m", json(0)).dump() +
+                                     " m away): from its old start the revised motion would meet other traffic");
+    }
+    if (planned) round.done.push_back("Revised " + v.id + ".");
   }
   if (!changed_any)
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "found nothing to change (colour, type, placement, speed or action)"}});
@@ -398,6 +411,14 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
     for (int k = 0; k < 10; ++k)
       add(std::string(colors[k]) + " " + kinds[k],
           with_said({{"placement", where[k]}, {"direction", k % 2 ? "toward" : "away"}, {"action", "straight"}}));
+  } else if (in.kind == "road_block") {
+    // Two police cars stopped across the lanes ahead, barriers in front of them.
+    const double at = said.value("distance_m", 20.0);
+    for (const char* where : {"front", "left_front"})
+      add("police car", with_said({{"placement", where}, {"distance_m", at}, {"action", "static"}}));
+    for (int k = 0; k < 3; ++k)
+      add("road barrier", with_said({{"placement", k == 1 ? "left_front" : "front"}, {"distance_m", at - 5.0 - 2.5 * (k / 2)},
+                                     {"action", "static"}}));
   } else {
     const double first = said.value("distance_m", 14.0);
     for (int k = 0; k < 6; ++k)

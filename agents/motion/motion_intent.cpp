@@ -42,6 +42,7 @@ void MotionIntent::merge(const MotionIntent& o) {
   if (o.wrong_way) wrong_way = o.wrong_way;
   if (o.chase) chase = o.chase;
   if (o.overtake) overtake = o.overtake;
+  if (o.lane_edge) lane_edge = o.lane_edge;
 }
 
 nlohmann::json to_json(const MotionIntent& m) {
@@ -50,6 +51,7 @@ nlohmann::json to_json(const MotionIntent& m) {
   if (m.distance_m) j["distance_m"] = *m.distance_m;
   if (m.distance_word) j["distance_word"] = *m.distance_word;
   if (m.lane) j["lane"] = *m.lane;
+  if (m.lane_edge) j["lane_edge"] = *m.lane_edge;
   if (m.relative) j["relative"] = {{"to", m.relative->to}, {"region", m.relative->region}};
   if (m.action) j["action"] = *m.action;
   if (m.speed) j["speed"] = *m.speed;
@@ -70,6 +72,7 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   if (j.contains("distance_m")) m.distance_m = j["distance_m"].get<double>();
   if (j.contains("distance_word")) m.distance_word = j["distance_word"].get<std::string>();
   if (j.contains("lane")) m.lane = j["lane"].get<std::string>();
+  if (j.contains("lane_edge")) m.lane_edge = j["lane_edge"].get<std::string>();
   if (j.contains("relative"))
     m.relative = RelativePlacement{j["relative"].value("to", ""), j["relative"].value("region", "back")};
   if (j.contains("action")) m.action = j["action"].get<std::string>();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 #include "agents/motion/motion_intent.hpp"
 
@@ -51,6 +52,11 @@ std::optional<RelativePlacement> find_relative(Words& w) {
         continue;
       if (ref.rfind("the ", 0) != 0 && ref != "it" && ref != "them" && ref != "him" && ref != "her" &&
           ref.rfind("that ", 0) != 0 && ref.rfind("this ", 0) != 0)
+        continue;
+      // "next to the kerb", "behind the junction": a place on the road, not a vehicle to place by.
+      const Words rw(w.begin() + long(after), w.begin() + long(end));
+      if (ref.rfind("the ", 0) == 0 && !has_any(rw, {"one", "ones", "it"}) && lexicon::find_types(rw).empty() &&
+          lexicon::find_brands(rw).empty() && lexicon::find_colors(rw).empty())
         continue;
       RelativePlacement r{ref, p.region};
       for (size_t k = at; k < end; ++k) w[k] = "_";
@@ -135,7 +141,7 @@ std::optional<std::string> find_lane(const Words& w_in) {
   if (has_any(w, {"my lane", "our lane", "same lane", "ego lane", "this lane", "current lane"})) return "ego";
   if (has_any(w, {"oncoming lane", "opposite lane", "other side of the road", "opposing lane", "oncoming traffic lane",
                   "lane of oncoming", "other side", "opposite side", "other carriageway", "opposite carriageway",
-                  "the other way", "opposite direction", "other direction"}))
+                  "the other way", "opposite direction", "other direction", "far side", "other side of the street"}))
     return "oncoming";
   if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane"}))
     return "cross";
@@ -321,11 +327,44 @@ void find_direction(const Words& w, MotionIntent& m) {
     m.wrong_way = true;
 }
 
+// "the lane next to the median", "the slow lane": which of a direction's lanes, said by the road
+// edge it lies at. The words are blanked so that "next to the median" is no vehicle to place by.
+std::optional<std::string> find_lane_edge(Words& w) {
+  static const char* features[] = {"median", "central reservation", "center line", "centerline", "divider",
+                                   "middle of the road", "center of the road", "curb", "kerb", "sidewalk", "pavement",
+                                   "edge of the road", "verge"};
+  static const char* links[] = {"next to the", "nearest the", "nearest to the", "closest to the", "beside the",
+                                "by the", "along the", "alongside the", "against the", "on the"};
+  for (const char* f : features)
+    for (const char* l : links) {
+      const std::string phrase = std::string(l) + " " + f;
+      const size_t at = find_phrase(w, phrase);
+      // Only for a lane: "parked next to the kerb" is the parking lane's to say.
+      if (at == std::string::npos || at == 0 || (w[at - 1] != "lane" && w[at - 1] != "lanes")) continue;
+      for (size_t k = 0; k < text::words(phrase).size(); ++k) w[at + k] = "_";
+      const std::string feature = f;
+      const bool outer = feature == "curb" || feature == "kerb" || feature == "sidewalk" || feature == "pavement" ||
+                         feature == "edge of the road" || feature == "verge";
+      return outer ? "outer" : "inner";
+    }
+  // "the fast lane" says which lane, not how fast: its first word goes.
+  static const std::pair<const char*, const char*> named[] = {
+      {"inner lane", "inner"}, {"inside lane", "inner"},  {"fast lane", "inner"},     {"overtaking lane", "inner"},
+      {"passing lane", "inner"}, {"outer lane", "outer"}, {"outside lane", "outer"}, {"slow lane", "outer"}};
+  for (const auto& [phrase, edge] : named)
+    if (const size_t at = find_phrase(w, phrase); at != std::string::npos) {
+      w[at] = "_";
+      return edge;
+    }
+  return std::nullopt;
+}
+
 }  // namespace
 
 MotionIntent parse_motion(const std::string& instruction) {
   Words w = text::words(instruction);
   MotionIntent m;
+  m.lane_edge = find_lane_edge(w);
   m.relative = find_place_of(w);
   if (!m.relative) m.relative = find_relative(w);
   if (m.relative && has_any(text::words(instruction), {"chasing", "chase", "chases", "following", "follows", "follow",

@@ -187,6 +187,11 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
   result.t_s.resize(e.poses.size());
   result.trajectory = e.poses;
   result.lane = scene_.lanes.lanes()[size_t(c.lane)].id;
+  // The lane asked for had no start that works: say which lane it got instead.
+  const bool edge_missed = m_.lane_edge && lane_edge_penalties()[size_t(c.lane)] > 1.0;
+  if (edge_missed || (m_.lane && lane_hint_penalty(c.lane, c.s) >= 60))
+    result.notes.push_back("no start in the " + (edge_missed ? *m_.lane_edge : *m_.lane) +
+                           " lane was free of other traffic; it drives in lane " + result.lane + " instead");
   result.speed_mps = e.speed;
   result.resolved = m_;
   result.resolved.action = e.action;

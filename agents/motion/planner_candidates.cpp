@@ -111,8 +111,50 @@ std::vector<Candidate> Planner::region_candidates() const {
   return out;
 }
 
+// "the lane next to the median" (inner), "the slow lane" (outer): among the driving lanes that run
+// beside the ego the same way as a lane, the one nearest to (or farthest from) the lanes running
+// the other way. Zero for every lane when nothing was said or no lane runs the other way.
+std::vector<double> Planner::lane_edge_penalties() const {
+  const auto& lanes = scene_.lanes.lanes();
+  if (!m_.lane_edge) return std::vector<double>(lanes.size(), 0.0);
+  // As strong as a named lane: a lane that is none of the road's through lanes is not it.
+  std::vector<double> out(lanes.size(), 60.0);
+  struct Beside {
+    size_t lane;
+    double lateral;
+    bool same_way;
+  };
+  std::vector<Beside> beside;
+  for (size_t li = 0; li < lanes.size(); ++li) {
+    if (lanes[li].type != "driving" || lanes[li].direction == scene::TrafficDirection::Both) continue;
+    const double s = scene_.lanes.project(int(li), ego_.p).s;
+    const Eigen::Vector2d pe = ego_.to_ego(scene_.lanes.point_at(int(li), s));
+    if (std::abs(pe.x()) > 15 || std::abs(std::cos(wrap(scene_.lanes.travel_yaw_at(int(li), s) - ego_.yaw))) < 0.7)
+      continue;  // a side street, or a lane that ends before reaching the ego
+    beside.push_back({li, pe.y(), same_way_as_ego(int(li), s)});
+  }
+  std::vector<double> gap(lanes.size(), -1.0);  // lateral distance to the nearest lane the other way
+  for (const auto& b : beside)
+    for (const auto& o : beside)
+      if (o.same_way != b.same_way)
+        gap[b.lane] = gap[b.lane] < 0 ? std::abs(b.lateral - o.lateral) : std::min(gap[b.lane], std::abs(b.lateral - o.lateral));
+  for (const auto& b : beside) {
+    out[b.lane] = 0;
+    if (gap[b.lane] < 0) continue;
+    double lo = gap[b.lane], hi = gap[b.lane];
+    for (const auto& o : beside)
+      if (o.same_way == b.same_way && gap[o.lane] >= 0) {
+        lo = std::min(lo, gap[o.lane]);
+        hi = std::max(hi, gap[o.lane]);
+      }
+    out[b.lane] = 15.0 * (*m_.lane_edge == "inner" ? gap[b.lane] - lo : hi - gap[b.lane]);
+  }
+  return out;
+}
+
 std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const {
   std::vector<Candidate> out;
+  const auto edge_penalty = lane_edge_penalties();
   const std::string placement = m_.placement.value_or("front");
   const Region region = region_for(placement, m_, widen_);
   const auto& lanes = scene_.lanes.lanes();
@@ -133,11 +175,13 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         if (!ds) continue;
         Candidate c{int(li), s, dir, parked, *ds};
         c.score += std::abs(pe.norm() - region.d_pref);
-        c.score += lane_hint_penalty(int(li), s);
+        c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
         if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(pe.y());
         if (placement == "left" || placement == "right") c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x());
         if (parked && movable_ && !parking && (m_.action == "static")) c.score += 4;  // parked cars belong at the kerb
         if (!movable_ && parking) c.score += 3;
+        // Coming down a side street: some way up it, so that it is seen coming, not born at the mouth.
+        if (!parked && m_.lane == "cross") c.score += 0.5 * std::abs(std::abs(pe.y()) - 15.0);
         out.push_back(c);
       }
     }

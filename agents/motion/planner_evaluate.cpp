@@ -73,9 +73,38 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
   return std::nullopt;
 }
 
+// With no speed said, a vehicle that faster traffic behind it would run into keeps that
+// traffic's pace instead (recorded vehicles cannot brake for it).
 Evaluated Planner::evaluate(const Candidate& c) const {
+  Evaluated e = evaluate_at(c, desired_speed(c.parked));
+  if (e.first_collision < 0 || m_.speed || m_.speed_mps || m_.chase.value_or(false) || e.action == "static") return e;
+  const auto pace = pace_of_traffic_behind(e);
+  if (!pace || *pace <= e.speed + 0.5 || *pace > speed_for("fast") * 1.5) return e;
+  Evaluated faster = evaluate_at(c, *pace);
+  return faster.valid && faster.first_collision < 0 ? faster : e;
+}
+
+// The speed of the vehicle that meets e's trajectory first, when it comes from behind.
+std::optional<double> Planner::pace_of_traffic_behind(const Evaluated& e) const {
+  const auto f = size_t(e.first_collision);
+  for (const auto& ob : req_.obstacles) {
+    if (ob.id != e.collides_with || f >= ob.poses.size() || f >= e.poses.size() || !ob.poses[f]) continue;
+    const Pose2& me = e.poses[f];
+    const Eigen::Vector2d to_ob(ob.poses[f]->x - me.x, ob.poses[f]->y - me.y);
+    if (to_ob.dot(Eigen::Vector2d(std::cos(me.yaw), std::sin(me.yaw))) >= 0) return std::nullopt;  // ahead of it
+    const size_t g = f > 0 && ob.poses[f - 1] ? f - 1 : f;
+    const size_t h = g == f && f + 1 < ob.poses.size() && ob.poses[f + 1] ? f + 1 : f;
+    if (g == h || h >= times_.size()) return std::nullopt;
+    const double dt = times_[h] - times_[g];
+    const Eigen::Vector2d d(ob.poses[h]->x - ob.poses[g]->x, ob.poses[h]->y - ob.poses[g]->y);
+    return dt > 1e-6 ? std::optional<double>(d.norm() / dt) : std::nullopt;
+  }
+  return std::nullopt;
+}
+
+Evaluated Planner::evaluate_at(const Candidate& c, double speed) const {
   Evaluated e;
-  e.speed = desired_speed(c.parked);
+  e.speed = speed;
   Manoeuvre mv;
   mv.action = c.parked ? "static" : m_.action.value_or("straight");
   if (const auto why = manoeuvre(c, e.speed, mv)) return invalid(e, *why);

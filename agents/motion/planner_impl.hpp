@@ -89,6 +89,7 @@ class Planner {
   bool wants_parked(bool on_parking) const;
   bool same_way_as_ego(int lane, double s) const;
   double lane_hint_penalty(int lane, double s) const;
+  std::vector<double> lane_edge_penalties() const;
 
   // Direction checks and preferences for one candidate travelling dir on lane.
   std::optional<double> direction_score(int lane, double s, int dir, bool parked) const;
@@ -97,6 +98,8 @@ class Planner {
   std::vector<Candidate> relative_candidates() const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
+  Evaluated evaluate_at(const Candidate& c, double speed) const;
+  std::optional<double> pace_of_traffic_behind(const Evaluated& e) const;
   std::optional<std::string> manoeuvre(const Candidate& c, double& speed, Manoeuvre& m) const;
 
   // The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that

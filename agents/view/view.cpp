@@ -25,6 +25,61 @@ std::optional<std::pair<int, double>> direction_word(const std::string& w) {
   return std::nullopt;
 }
 
+// The first direction word of the sentence, before or after its first distance, tells how the
+// user writes: "forward 3 m, up 1 m" (before) or "3 m forward and 1 m up" (after). Each distance
+// takes the direction on that side first, then the other, then none.
+bool directions_lead(const Words& w, const std::vector<text::Quantity>& distances) {
+  for (size_t i = 0; i < w.size(); ++i) {
+    if (!distances.empty() && i >= distances.front().begin) return false;
+    if (direction_word(w[i])) return true;
+  }
+  return false;
+}
+
+// "three metres up and two to the left": a bare number after a distance takes its unit.
+Words with_units(Words w) {
+  for (size_t i = 1; i + 1 < w.size(); ++i) {
+    size_t used = 0;
+    if (w[i - 1] != "and" || !text::number_at(w, i, &used) || used != 1) continue;
+    if (!direction_word(w[i + 1]) && w[i + 1] != "to") continue;
+    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)),
+                                         {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
+    if (!before.empty()) w.insert(w.begin() + long(i) + 1, w[before.back().end - 1]);
+  }
+  return w;
+}
+
+void add_translations(const Words& w, ViewChange& v) {
+  const Words wu = with_units(w);
+  const auto distances = text::quantities(wu, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
+  const bool lead = directions_lead(wu, distances);
+  for (size_t k = 0; k < distances.size(); ++k) {
+    const auto& q = distances[k];
+    const std::string unit = wu[q.end - 1];
+    const double f = (unit == "feet" || unit == "foot" || unit == "ft") ? 0.3048 : (unit == "centimeters" || unit == "cm") ? 0.01 : 1.0;
+    auto after = [&]() -> std::optional<std::pair<int, double>> {
+      const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : wu.size();
+      for (size_t i = q.end; i < std::min(next_start, q.end + 4); ++i) {
+        // "further back": "further" only strengthens the direction word after it.
+        if ((wu[i] == "further" || wu[i] == "farther") && i + 1 < wu.size() && direction_word(wu[i + 1])) continue;
+        if (auto d = direction_word(wu[i])) return d;
+      }
+      return std::nullopt;
+    };
+    auto before = [&]() -> std::optional<std::pair<int, double>> {
+      const size_t prev_end = k > 0 ? distances[k - 1].end : 0;
+      for (size_t i = q.begin; i-- > prev_end && q.begin - i <= 5;)
+        if (auto d = direction_word(wu[i])) return d;
+      return std::nullopt;
+    };
+    auto dir = lead ? before() : after();
+    if (!dir) dir = lead ? after() : before();
+    if (!dir) continue;
+    if (!v.translation_m) v.translation_m = std::array<double, 3>{0, 0, 0};
+    (*v.translation_m)[size_t(dir->first)] += dir->second * q.value * f;
+  }
+}
+
 }  // namespace
 
 ViewChange parse_view(const std::string& instruction) {
@@ -47,36 +102,13 @@ ViewChange parse_view(const std::string& instruction) {
     if (pitch) v.pitch_deg = v.pitch_deg.value_or(0) + sign * q.value;
     else v.yaw_deg = v.yaw_deg.value_or(0) + sign * q.value;
   }
-  // Translations: each distance with the direction word after it, else before it, else the verb.
-  // "three metres up and two to the left": a bare number after a distance takes its unit.
-  Words with_units = w;
-  for (size_t i = 1; i + 1 < with_units.size(); ++i) {
-    size_t used = 0;
-    if (with_units[i - 1] != "and" || !text::number_at(with_units, i, &used) || used != 1) continue;
-    if (!direction_word(with_units[i + 1]) && with_units[i + 1] != "to") continue;
-    const auto before = text::quantities(Words(with_units.begin(), with_units.begin() + long(i)),
-                                         {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
-    if (!before.empty()) with_units.insert(with_units.begin() + long(i) + 1, with_units[before.back().end - 1]);
-  }
-  const Words& wu = with_units;
-  const auto distances = text::quantities(wu, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
-  for (size_t k = 0; k < distances.size(); ++k) {
-    const auto& q = distances[k];
-    const std::string unit = wu[q.end - 1];
-    const double f = (unit == "feet" || unit == "foot" || unit == "ft") ? 0.3048 : (unit == "centimeters" || unit == "cm") ? 0.01 : 1.0;
-    std::optional<std::pair<int, double>> dir;
-    const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : wu.size();
-    for (size_t i = q.end; i < std::min(next_start, q.end + 4) && !dir; ++i) {
-      // "further back": "further" only strengthens the direction word after it.
-      if ((wu[i] == "further" || wu[i] == "farther") && i + 1 < wu.size() && direction_word(wu[i + 1])) continue;
-      dir = direction_word(wu[i]);
-    }
-    const size_t prev_end = k > 0 ? distances[k - 1].end : 0;
-    for (size_t i = q.begin; i-- > prev_end && q.begin - i <= 5 && !dir;) dir = direction_word(wu[i]);
-    if (!dir) continue;
-    if (!v.translation_m) v.translation_m = std::array<double, 3>{0, 0, 0};
-    (*v.translation_m)[size_t(dir->first)] += dir->second * q.value * f;
-  }
+  add_translations(w, v);
+  // "turn the view around", "look behind": half a turn when no angle is given.
+  if (!v.yaw_deg && text::has_any(w, {"turn around", "turn the view around", "turn the camera around", "look behind",
+                                      "look back", "look backward", "look backwards", "face backward", "face backwards",
+                                      "facing backward", "facing backwards", "look the other way", "face the other way",
+                                      "rear view", "rearward", "view around", "camera around", "about face"}))
+    v.yaw_deg = 180;
   if (text::has_any(w, {"ego", "drive", "drives", "driving", "i drive", "we drive"}) &&
       !text::has_any(w, {"camera", "view", "viewpoint"})) {
     if (text::has_any(w, {"slowly", "slow", "crawl"})) v.ego_motion = "slow";

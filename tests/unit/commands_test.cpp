@@ -112,8 +112,8 @@ TEST(Commands, OwnParaphrasesAllPass) {
 // v5, each frozen after the fixes before it) stay above what they scored when this test was
 // written, and no added vehicle ever meets another at any frame.
 TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
-  for (const auto& [file, floor] : {std::pair{"commands-blind-v2.jsonl", 0.94}, std::pair{"commands-blind-v3.jsonl", 0.80},
-                                    std::pair{"commands-blind-v4.jsonl", 0.94}, std::pair{"commands-blind-v5.jsonl", 0.78}}) {
+  for (const auto& [file, floor] : {std::pair{"commands-blind-v2.jsonl", 0.94}, std::pair{"commands-blind-v3.jsonl", 0.84},
+                                    std::pair{"commands-blind-v4.jsonl", 0.94}, std::pair{"commands-blind-v5.jsonl", 0.96}}) {
     const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file);
     ASSERT_GE(s.total, 50) << file;
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;

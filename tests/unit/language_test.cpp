@@ -225,3 +225,71 @@ TEST(Language, NumbersWithHalvesAndSymbols) {
   EXPECT_DOUBLE_EQ(q[1].value, 7.5);
   EXPECT_DOUBLE_EQ(q[2].value, 10);
 }
+
+TEST(Language, ViewMovesInAListTakeTheDirectionOnTheSideTheUserWritesIt) {
+  auto v = view::parse_view("move the camera forward 3 m, up 1 m and rotate 20 degrees left");
+  EXPECT_EQ(*v.translation_m, (std::array<double, 3>{3, 0, 1}));
+  EXPECT_DOUBLE_EQ(*v.yaw_deg, 20);
+  v = view::parse_view("move the camera 3 m forward and 1 m up");
+  EXPECT_EQ(*v.translation_m, (std::array<double, 3>{3, 0, 1}));
+  v = view::parse_view("raise the camera 2 m and move it 1 m to the left");
+  EXPECT_EQ(*v.translation_m, (std::array<double, 3>{0, 1, 2}));
+  EXPECT_DOUBLE_EQ(*view::parse_view("turn the view around").yaw_deg, 180);
+  EXPECT_DOUBLE_EQ(*view::parse_view("look back 30 degrees to the left").yaw_deg, 30);
+  EXPECT_EQ(manager::decompose("look behind me")[0].kind, "view");
+  EXPECT_EQ(manager::decompose("make it turn around")[0].kind, "revise");
+}
+
+TEST(Language, AdditionsSaidInThePassiveOrWithANewSubject) {
+  auto in = manager::decompose("A navy Genesis GV80 should be added about forty-five metres ahead.");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_EQ(in[0].text, "add a navy genesis gv80 about forty five meters ahead");
+  EXPECT_EQ(manager::decompose("I want a white van placed behind me")[0].kind, "add");
+  EXPECT_EQ(manager::decompose("a pickup should come out of the side street")[0].kind, "add");
+  // Not new: a vehicle named with "the", a pronoun, or a number that is an amount.
+  EXPECT_EQ(manager::decompose("the added car should be placed 10 m further ahead")[0].kind, "revise");
+  EXPECT_EQ(manager::decompose("now also 2 m forward")[0].kind, "view");
+  EXPECT_EQ(manager::decompose("repaint it orange")[0].kind, "revise");
+  EXPECT_EQ(manager::decompose("respray the van green")[0].kind, "revise");
+  EXPECT_EQ(manager::decompose("set up a road block at the junction")[0].kind, "road_block");
+}
+
+TEST(Language, SisterBrandsAndOrdinaryWordMakes) {
+  // "cupra" is only a make; "seat" is also a word, a make only before a model or a noun.
+  const auto cupra = lexicon::find_brands(text::words("delete the cupra"));
+  ASSERT_EQ(cupra.size(), 1u);
+  EXPECT_EQ(cupra[0].brand, "seat");
+  EXPECT_TRUE(lexicon::find_brands(text::words("take a seat")).empty());
+  EXPECT_FALSE(lexicon::find_brands(text::words("a seat ibiza")).empty());
+}
+
+TEST(Language, DeletionByOrderAlongTheRowAndByAnotherObject) {
+  auto d = deletion::parse_deletion("remove the last parked car on the right");
+  ASSERT_EQ(d.targets.size(), 1u);
+  EXPECT_EQ(d.targets[0].order, "farthest");
+  d = deletion::parse_deletion("remove the car parked closest to the police car");
+  ASSERT_EQ(d.targets.size(), 2u);
+  EXPECT_TRUE(d.targets[0].anchor_only);
+  EXPECT_EQ(d.targets[0].category, "vehicle.emergency.police");
+  EXPECT_EQ(d.targets[1].of_previous, "near");
+  EXPECT_FALSE(d.targets[1].moving.value_or(true));
+  d = deletion::parse_deletion("delete the van behind the bus");
+  ASSERT_EQ(d.targets.size(), 2u);
+  EXPECT_EQ(d.targets[1].of_previous, "behind");
+  // A place named after a vehicle is no object to place by.
+  EXPECT_EQ(deletion::parse_deletion("delete the car in front of the bus stop").targets.size(), 1u);
+}
+
+TEST(Language, LaneEdgesAreLanesNotVehiclesToPlaceBy) {
+  auto m = motion::parse_motion("add an suv coming toward me on the far side in the lane next to the median");
+  EXPECT_EQ(m.lane_edge, "inner");
+  EXPECT_FALSE(m.relative);
+  EXPECT_EQ(m.lane, "oncoming");
+  m = motion::parse_motion("a truck in the slow lane");
+  EXPECT_EQ(m.lane_edge, "outer");
+  EXPECT_FALSE(m.speed);
+  m = motion::parse_motion("a van parked next to the kerb");
+  EXPECT_FALSE(m.lane_edge);
+  EXPECT_EQ(m.lane, "parking");
+}

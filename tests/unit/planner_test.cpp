@@ -144,3 +144,43 @@ TEST(Planner, TrajectoriesAreDrivableByABicycleModel) {
   EXPECT_EQ(s.lanes.lanes()[size_t(on.front().lane)].id, "south");
   EXPECT_LT(std::abs(on.front().lateral), 1.0);
 }
+
+TEST(Planner, TheLaneNextToTheCentreLineOrTheKerb) {
+  const auto s = test_support::synthetic_scene();
+  // Two lanes run the ego's way (y = 0 and 3.5), the oncoming one at y = 7.
+  auto r = plan(s, "a car 20 m ahead in the lane next to the centre line");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.resolved.lane_edge, "inner");
+  EXPECT_EQ(r.lane, "left");
+  r = plan(s, "a car 20 m ahead in the fast lane");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "left");
+  EXPECT_FALSE(r.resolved.speed_mps && *r.resolved.speed_mps > 12);  // "fast lane" names a lane, not a speed
+  r = plan(s, "a car 10 m ahead in the slow lane");
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "ego");
+}
+
+TEST(Planner, WithNoSpeedSaidItKeepsThePaceOfFasterTrafficBehind) {
+  auto s = test_support::synthetic_scene();
+  s.objects.pop_back();  // no truck ahead
+  PlanRequest req;
+  req.intent = parse_motion("a car 15 m ahead in my lane");
+  req.type = "car";
+  req.obstacles = scene_obstacles(s, {});
+  Obstacle fast{"fast_car", {4.5, 1.9, 1.5}, {}, false};
+  for (int i = 0; i < 51; ++i) fast.poses.push_back(Pose2{-5 + 1.4 * i, 0, 0});  // 14 m/s in the ego lane
+  req.obstacles.push_back(fast);
+  const auto r = plan_motion(s, req);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "ego");
+  EXPECT_NEAR(r.speed_mps, 14, 0.5);
+  EXPECT_FALSE(collides(r, req.obstacles, {4.5, 1.9, 1.5}));
+  // A speed the user said stands: slow, somewhere the fast car does not catch it, or refused.
+  req.intent = parse_motion("a car 15 m ahead in my lane driving slowly");
+  const auto slow = plan_motion(s, req);
+  if (slow.ok) {
+    EXPECT_LT(slow.speed_mps, 6);
+    EXPECT_FALSE(collides(slow, req.obstacles, {4.5, 1.9, 1.5}));
+  }
+}
