@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Writes the three layout-only scenes of the blind command set (tests/data/commands-blind-v2.jsonl).
+"""Writes the layout-only scenes of the blind command sets (tests/data/commands-blind-v*.jsonl).
 
 They differ from the dev layout on purpose: a one-way three-lane street with parking on both sides
 and side streets on both sides; a two-lane road that curves left, with a bus bay and a side street
-to the left; a divided road, three lanes each way, a crossroads at 50 m, parking on the right.
+to the left; a divided road, three lanes each way, a crossroads at 50 m, parking on the right; a
+T junction (v3); an undivided avenue, two lanes each way, parking both sides, staggered side
+streets left and right (v6).
 Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no randomness).
 """
 import json
@@ -203,7 +205,37 @@ def tee():
           lanes, east, 6, objects)
 
 
+def avenue():
+    """Undivided avenue, two lanes each way (ego in the right one), parking on both sides, a side street
+    left at x=45 and one right at x=110."""
+    east = lambda y: line(-60, y, 220, y)
+    west = lambda y: line(220, y, -60, y)
+    lanes = [lane("east_kerb", east(0)), lane("east_inner", east(3.5)),
+             lane("west_inner", west(7)), lane("west_kerb", west(10.5)),
+             lane("parking_right_a", line(-60, -3, 100, -3), 2.5, "parking"),
+             lane("parking_right_b", line(120, -3, 220, -3), 2.5, "parking"),
+             lane("parking_left_a", line(220, 13.5, 55, 13.5), 2.5, "parking"),
+             lane("parking_left_b", line(35, 13.5, -60, 13.5), 2.5, "parking"),
+             lane("side_left_north", line(46.75, 12.25, 46.75, 90)), lane("side_left_south", line(43.25, 90, 43.25, 12.25)),
+             lane("side_right_south", line(108.25, -1.75, 108.25, -90)),
+             lane("side_right_north", line(111.75, -90, 111.75, -1.75))]
+    objects = [obj(1, "vehicle.car", static(20, -3), "red"), obj(2, "vehicle.car", static(32, -3), "silver"),
+               obj(3, "vehicle.car", static(62, -3), "black"),
+               obj(4, "vehicle.car", track_along(east(0), 100, 8), "white"),
+               obj(5, "vehicle.truck", track_along(east(3.5), 130, 6), "grey"),
+               obj(6, "vehicle.car", track_along(west(7), 100, 10), "blue"),
+               obj(7, "vehicle.bus.rigid", track_along(west(10.5), 60, 7), "yellow"),
+               obj(8, "vehicle.car", static(43.25, 22, -math.pi / 2), "green"),
+               obj(9, "vehicle.motorcycle", track_along(east(3.5), 35, 12), "red"),
+               obj(10, "human.pedestrian.adult", static(30, 16)),
+               obj(11, "movable_object.trafficcone", static(75, -3), "orange"),
+               obj(12, "vehicle.car", static(25, 13.5, math.pi), "white")]
+    write("blind-avenue", "hand-made layout: undivided avenue, two lanes each way, parking both sides, "
+          "staggered side streets", lanes, east(0), 8, objects)
+
+
 if __name__ == "__main__":
+    avenue()
     oneway()
     curve()
     divided()
