@@ -22,6 +22,12 @@ std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
       if (!out.back().empty()) out.emplace_back();
       continue;
     }
+    // "the red car, the truck and the motorbike" (the commas are gone): a determiner right after
+    // a vehicle noun starts the next phrase; "the car behind the bus" keeps its relation.
+    if ((w[i] == "the" || w[i] == "a" || w[i] == "an") && i > begin && !out.back().empty()) {
+      const auto nouns = lexicon::find_types(out.back());
+      if (!nouns.empty() && nouns.back().end == out.back().size()) out.emplace_back();
+    }
     out.back().push_back(w[i]);
   }
   if (out.back().empty()) out.pop_back();
@@ -64,9 +70,9 @@ std::optional<std::string> lane_words(const Words& p) {
   if (text::has_any(p, {"left lane", "left hand lane", "fast lane", "outside lane", "passing lane", "overtaking lane"}))
     return "left";
   if (text::has_any(p, {"right lane", "right hand lane", "slow lane", "inside lane", "nearside lane"})) return "right";
-  if (text::has_any(p, {"oncoming", "other carriageway", "opposite carriageway", "other side of the road",
-                        "opposite side of the road", "opposite direction", "other direction", "the other way",
-                        "coming toward", "toward me", "toward us", "coming at me", "coming at us"}))
+  if (text::has_any(p, {"oncoming", "other carriageway", "opposite carriageway", "opposite direction",
+                        "other direction", "the other way", "coming toward", "toward me", "toward us", "coming at me",
+                        "coming at us"}))
     return "oncoming";
   if (text::has_any(p, {"side street", "side road", "cross street", "crossroads", "junction", "intersection",
                         "crossing", "cross traffic", "side streets"}))
@@ -129,6 +135,12 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
   const auto colors = lexicon::find_colors(p);
   if (!colors.empty()) s.color = lexicon::color_class(colors.front().rgb);
   s.lane = lane_words(p);
+  // "across the street", "on my side": a half of the road, parked cars included.
+  if (text::has_any(p, {"across the street", "across the road", "far side", "other side of the road", "other side of the street",
+                        "opposite side", "over the road", "across from me", "across from us"}))
+    s.road_side = "far";
+  else if (text::has_any(p, {"my side", "our side", "this side", "near side", "nearside", "same side"}))
+    s.road_side = "near";
   if (text::has_any(p, {"coming toward", "toward me", "toward us", "approaching", "coming at"})) s.approaching = true;
   // "the truck behind it": placed by the object the phrase before named, not by the ego.
   if (previous != nullptr) {
@@ -213,6 +225,7 @@ bool matches(const Selector& s, const Candidate& c) {
   if (s.color && (!c.object->color_rgb || lexicon::color_class(*c.object->color_rgb) != *s.color)) return false;
   if (s.moving && (c.speed > 0.5) != *s.moving) return false;
   if (s.lane && !has_lane(c.lane, *s.lane)) return false;
+  if (s.road_side && !has_lane(c.lane, *s.road_side)) return false;
   if (s.approaching) {  // its heading points at the ego's place
     const bool toward = c.speed > 0.5 && -(std::cos(c.yaw) * c.pe.x() + std::sin(c.yaw) * c.pe.y()) > 0;
     if (toward != *s.approaching) return false;
@@ -238,6 +251,7 @@ std::string describe(const Selector& s) {
   out += s.noun.empty() ? "object" : s.noun;
   if (s.region) out += " (" + *s.region + ")";
   if (s.lane) out += " (lane: " + *s.lane + ")";
+  if (s.road_side) out += *s.road_side == "far" ? " across the road" : " on the ego's side of the road";
   return out;
 }
 
@@ -301,6 +315,7 @@ static nlohmann::json selector_json(const Selector& s) {
   if (s.color) j["color"] = *s.color;
   if (s.region) j["region"] = *s.region;
   if (s.lane) j["lane"] = *s.lane;
+  if (s.road_side) j["road_side"] = *s.road_side;
   if (s.of_previous) j["of_previous"] = *s.of_previous;
   if (s.anchor_only) j["anchor_only"] = true;
   if (s.approaching) j["approaching"] = *s.approaching;
@@ -321,6 +336,7 @@ static Selector selector_from(const nlohmann::json& j) {
   if (j.contains("color")) s.color = j["color"].get<std::string>();
   if (j.contains("region")) s.region = j["region"].get<std::string>();
   if (j.contains("lane")) s.lane = j["lane"].get<std::string>();
+  if (j.contains("road_side")) s.road_side = j["road_side"].get<std::string>();
   if (j.contains("of_previous")) s.of_previous = j["of_previous"].get<std::string>();
   s.anchor_only = j.value("anchor_only", false);
   if (j.contains("approaching")) s.approaching = j["approaching"].get<bool>();

@@ -31,10 +31,6 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   if (lanes.empty() || scene.frames.empty()) return r;
   const int own = lane_at(lanes, p, false);
   if (own < 0) return r;
-  if (lanes.lanes()[size_t(own)].type == "parking") {
-    r.parking = true;
-    return r;
-  }
   const auto& ego_pose = scene.frames.front().ego_to_world;
   const Eigen::Vector2d ego = ego_pose.translation().head<2>();
   const Eigen::Vector3d fwd = ego_pose.linear().col(0);
@@ -43,9 +39,35 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   double ref_yaw = std::atan2(fwd.y(), fwd.x());
   if (ego_lane >= 0) ref_yaw = lanes.travel_yaw_at(ego_lane, lanes.project(ego_lane, p).s);
   const auto same_way = [&](int lane, double s) { return std::abs(wrap(lanes.travel_yaw_at(lane, s) - ref_yaw)); };
+  if (lanes.lanes()[size_t(own)].type == "parking") {
+    r.parking = true;
+    // Its half of the road is that of the nearest driving lane along it, when the road has both.
+    int nearest = -1;
+    double best = 8.0;
+    bool road_has_oncoming = false;
+    for (size_t i = 0; i < lanes.lanes().size(); ++i) {
+      if (lanes.lanes()[i].type != "driving") continue;
+      const auto pos = lanes.project(int(i), p);
+      if (pos.s <= 0.5 || pos.s >= lanes.lanes()[i].length() - 0.5 || std::abs(pos.lateral) > 20) continue;
+      const double d = same_way(int(i), pos.s);
+      if (d > kPi / 4 && d < 3 * kPi / 4) continue;  // a side street
+      road_has_oncoming = road_has_oncoming || d >= 3 * kPi / 4;
+      if (std::abs(pos.lateral) < best) {
+        best = std::abs(pos.lateral);
+        nearest = int(i);
+      }
+    }
+    if (nearest >= 0 && road_has_oncoming) {
+      const bool far = same_way(nearest, lanes.project(nearest, p).s) >= 3 * kPi / 4;
+      r.far_side = far;
+      r.near_side = !far;
+    }
+    return r;
+  }
   const double d = same_way(own, lanes.project(own, p).s);
   if (d > 3 * kPi / 4) {
     r.oncoming = true;
+    r.far_side = true;
     return r;
   }
   if (d > kPi / 4) {
@@ -53,6 +75,7 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
     return r;
   }
   r.ego = own == ego_lane;
+  r.near_side = true;
   // Same-direction driving lanes beside the object's, by which side of it they lie.
   int to_left = 0, to_right = 0;
   for (size_t i = 0; i < lanes.lanes().size(); ++i) {
@@ -77,6 +100,8 @@ bool has_lane(const LaneRelation& r, const std::string& lane) {
   if (lane == "oncoming") return r.oncoming;
   if (lane == "cross") return r.cross;
   if (lane == "parking") return r.parking;
+  if (lane == "near") return r.near_side;
+  if (lane == "far") return r.far_side;
   return false;
 }
 

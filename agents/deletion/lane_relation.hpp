@@ -18,13 +18,17 @@ struct LaneRelation {
   bool oncoming = false;  // a lane travelled against the ego's direction
   bool cross = false;     // a lane across the ego's (side street, cross street)
   bool parking = false;   // a parking lane or bay
+  // Which half of the road: the ego's (its direction's lanes and the kerb beside them) or the far
+  // one (the oncoming lanes and beyond). Neither on a side street or a one-way street's kerbs.
+  bool near_side = false;
+  bool far_side = false;
 };
 
 // p: the object's centre at frame 0, world frame.
 LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p);
 
 // Whether a relation has the lane word a selector asks for (ego, left, middle, right, oncoming,
-// cross, parking).
+// cross, parking), or the road side (near, far).
 bool has_lane(const LaneRelation& r, const std::string& lane);
 
 }  // namespace chatsim::agents::deletion

@@ -230,7 +230,9 @@ bool classify_whole(const Words& c, Instruction& in) {
     in.text = "remove all vehicles";
     return true;
   }
-  if (has_any(c, {"road block", "roadblock", "road blockade", "checkpoint", "block the road", "block off the road",
+  if (has_any(c, {"stopping traffic", "stopping the traffic", "stop the traffic", "stop traffic", "halting traffic",
+                  "halt the traffic", "holding up traffic", "police stop", "police control"}) ||
+      has_any(c, {"road block", "roadblock", "road blockade", "checkpoint", "block the road", "block off the road",
                   "block the street", "block off the street", "barricade the road", "barricade the street",
                   "police barricade", "police cordon", "cordon off"})) {
     in.kind = "road_block";
@@ -305,15 +307,20 @@ Instruction classify(const Words& c_in) {
   if (classify_whole(c, in)) return in;
   const bool vehicle = mentions_vehicle(c);
   const bool added_ref = refers_to_added(c);
-  // "I'd like the bus gone", "I want the red car removed": a deletion said by its result.
+  // "I'd like the bus gone", "I want the red car removed", "I don't want the van in the shot": a
+  // deletion said by its result.
   if (vehicle && !starts(add_verbs()) &&
-      has_any(c, {"gone", "removed", "deleted", "erased", "out of the way", "out of the picture", "out of the scene"})) {
+      has_any(c, {"gone", "removed", "deleted", "erased", "out of the way", "out of the picture", "out of the scene",
+                  "out of the shot", "out of shot", "don't want", "dont want", "do not want", "don't need",
+                  "do not need", "no longer want", "not want"})) {
     in.kind = added_ref ? "remove_added" : "delete";
     in.target = added_ref ? in.text : "";
     in.text = "remove " + in.text;
     return in;
   }
-  if (starts(delete_verbs()) || has_any(c, {"get rid of", "take away", "take out"})) {
+  // "get it to drive off" is a revision; "get rid of it", "get the bus out of here" a deletion.
+  const bool causative_get = first == "get" && !has_any(c, {"get rid", "out", "away", "off the road", "gone"});
+  if ((starts(delete_verbs()) && !causative_get) || has_any(c, {"get rid of", "take away", "take out"})) {
     in.kind = added_ref ? "remove_added" : "delete";
     in.target = added_ref ? in.text : "";
     return in;
@@ -330,6 +337,13 @@ Instruction classify(const Words& c_in) {
   }
   if (indefinite_vehicle_subject(c) && !has_any(c, {"what", "why", "how", "who", "which"})) {
     in.kind = "add";
+    return in;
+  }
+  // "another one behind that", "one more on the left": a copy of the vehicle spoken about last.
+  if ((first == "another" || (c.size() > 1 && first == "one" && c[1] == "more")) && !vehicle) {
+    in.kind = "add";
+    in.target = "it";
+    in.text = "add " + in.text;
     return in;
   }
   if (starts(add_verbs())) {
@@ -355,12 +369,15 @@ Instruction classify(const Words& c_in) {
                                       "face backward", "face backwards", "look the other way", "face the other way"});
   const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
                           has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom;
-  const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "set", "paint", "repaint", "respray", "recolor", "color", "turn",
+  const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "get", "set", "paint", "repaint", "respray", "recolor", "color", "turn",
                                        "move", "speed", "slow", "swap", "replace", "switch", "should", "park", "stop",
                                        "pull", "reverse", "accelerate", "brake"});
   // "the white one", "the second one": a vehicle named by what tells it apart.
   const bool one_ref = has_any(c, {"one", "ones"}) && !starts(add_verbs());
-  if (!view_words && (added_ref || vehicle || one_ref) && revise_verb) {
+  // "change the colour to green", "set the speed to 30 km/h": what is changed names no vehicle.
+  const bool attribute_ref = has_any(c, {"the color", "its color", "the paint", "the speed", "its speed", "the brand",
+                                         "the model", "the make", "the lane", "its lane"});
+  if (!view_words && (added_ref || vehicle || one_ref || attribute_ref) && revise_verb) {
     in.kind = "revise";
     in.target = reference_in(in.text);
     return in;

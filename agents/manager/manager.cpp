@@ -321,50 +321,75 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
       round.done.push_back("Revised " + v.id + ".");
       continue;
     }
-    json keep = said;
-    // "make it follow the grey car": it keeps its start and follows; only "put it behind the grey
-    // car" moves it.
-    const bool follow_only = said.contains("relative") && said.value("chase", false);
-    if (follow_only) keep.erase("relative");
-    if (said.contains("distance_change_m")) {  // "10 m further away"
-      keep["distance_m"] = std::max(0.0, v.resolved.value("distance_m", 0.0) + said["distance_change_m"].get<double>());
-      keep.erase("distance_change_m");
-      keep.erase("relative");
-    }
-    // Same place unless told otherwise: a revision of how it moves keeps where it starts.
-    const bool keeps_start = !keep.contains("placement") && !keep.contains("relative") && !keep.contains("distance_m") &&
-                             !v.intent.contains("relative") && v.resolved.contains("distance_m");
-    if (keeps_start) keep["distance_m"] = v.resolved["distance_m"];
-    json args{{"base_intent", v.intent}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},
-              {"type", v.asset["type"]}, {"removed", c.removed}, {"others", others_json(c, t)}};
-    json merged_rel = said.contains("relative") ? said["relative"] : (said.contains("placement") ? json() : v.intent.value("relative", json()));
-    if (!merged_rel.is_null()) {
-      if (const auto anchor = find_anchor(c, merged_rel.value("to", "it"), t)) {
-        args["anchor"] = *anchor;
-        if (follow_only) args["base_intent"].erase("relative");
-      } else {
-        // The anchor is gone: keep the vehicle where it starts now.
-        args["base_intent"].erase("relative");
-        args["intent"].erase("relative");
-      }
-    }
-    const size_t unresolved_before = c.unresolved.size();
-    bool planned = plan_motion(c, v, args, in.text);
-    if (!planned && keeps_start) {
-      // Where it starts was ours to keep, not the user's: "make it go slower" may need a start
-      // where the traffic behind does not catch up with it.
-      c.unresolved.erase(c.unresolved.begin() + long(unresolved_before), c.unresolved.end());
-      args["intent"].erase("distance_m");
-      planned = plan_motion(c, v, args, in.text);
-      if (planned) c.notes.push_back(v.id + ": starts at a new place (" + v.resolved.value("distance_m", json(0)).dump() +
-                                     " m away): from its old start the revised motion would meet other traffic");
-    }
-    if (planned) round.done.push_back("Revised " + v.id + ".");
+    if (replan_revised(c, t, said, in.text)) round.done.push_back("Revised " + v.id + ".");
   }
   if (!changed_any)
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "found nothing to change (colour, type, placement, speed or action)"}});
   c.last_ref = targets.back();
   if (targets.size() > 1) c.last_group = targets;
+}
+
+// A revised vehicle's new motion: what was said over what it had, from where it starts unless the
+// revision moves it.
+bool Manager::replan_revised(Conversation& c, int t, const json& said, const std::string& text) {
+  AddedVehicle& v = c.added[size_t(t)];
+  json keep = said;
+  // "make it follow the grey car": it keeps its start and follows; only "put it behind the grey
+  // car" moves it.
+  const bool follow_only = said.contains("relative") && said.value("chase", false);
+  if (follow_only) keep.erase("relative");
+  if (said.contains("distance_change_m")) {  // "10 m further away"
+    keep["distance_m"] = std::max(0.0, v.resolved.value("distance_m", 0.0) + said["distance_change_m"].get<double>());
+    keep.erase("distance_change_m");
+    keep.erase("relative");
+  }
+  // Same place unless told otherwise: a revision of how it moves keeps where it starts.
+  const bool place_said = keep.contains("placement") || keep.contains("relative") || keep.contains("distance_m");
+  const bool keeps_start = !place_said && !v.intent.contains("relative") && v.resolved.contains("distance_m");
+  if (keeps_start) keep["distance_m"] = v.resolved["distance_m"];
+  json args{{"base_intent", v.intent}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},
+            {"type", v.asset["type"]}, {"removed", c.removed}, {"others", others_json(c, t)}};
+  // Placed by another vehicle and not moved now: "have it pull out" starts where it stands, not
+  // wherever the relation would put a vehicle that moves.
+  const json placed_by = v.intent.value("relative", json());
+  const bool pinned = !place_said && !follow_only && !placed_by.is_null() && !v.trajectory.empty();
+  const json merged_rel = said.contains("relative") ? said["relative"] : (said.contains("placement") ? json() : placed_by);
+  const json unpinned = args;
+  if (pinned) {
+    const auto& p0 = v.trajectory.front();
+    args["base_intent"].erase("relative");
+    args["intent"]["relative"] = {{"to", v.id}, {"region", "at"}};
+    args["anchor"] = {{"id", v.id}, {"x", p0["x"]}, {"y", p0["y"]}, {"yaw", p0["yaw"]}, {"size_lwh", v.asset["size_lwh"]},
+                      {"speed_mps", v.speed_mps}, {"wrong_way", v.resolved.value("wrong_way", false)}};
+  } else if (!merged_rel.is_null()) {
+    if (const auto anchor = find_anchor(c, merged_rel.value("to", "it"), t)) {
+      args["anchor"] = *anchor;
+      if (follow_only) args["base_intent"].erase("relative");
+    } else {
+      // The anchor is gone: keep the vehicle where it starts now.
+      args["base_intent"].erase("relative");
+      args["intent"].erase("relative");
+    }
+  }
+  const size_t unresolved_before = c.unresolved.size();
+  bool planned = plan_motion(c, v, args, text);
+  if (!planned && (keeps_start || pinned)) {
+    // Where it starts was ours to keep, not the user's: "make it go slower" may need a start
+    // where the traffic behind does not catch up with it, "drive off" one it can pull out of.
+    c.unresolved.erase(c.unresolved.begin() + long(unresolved_before), c.unresolved.end());
+    args["intent"].erase("distance_m");
+    if (pinned) {
+      args = unpinned;
+      if (const auto anchor = find_anchor(c, placed_by.value("to", "it"), t)) args["anchor"] = *anchor;
+      else args["base_intent"].erase("relative");
+    }
+    planned = plan_motion(c, v, args, text);
+    if (planned) c.notes.push_back(v.id + ": starts at a new place (" + v.resolved.value("distance_m", json(0)).dump() +
+                                   " m away): from its old start the revised motion would meet other traffic");
+  }
+  if (planned && pinned && v.intent.contains("relative") && v.intent["relative"].value("region", "") == "at")
+    v.intent["relative"] = placed_by;  // later rounds place it by what placed it
+  return planned;
 }
 
 void Manager::do_remove_added(Conversation& c, const Instruction& in, Round& round) {

@@ -75,6 +75,7 @@ class Manager {
   void do_restore(Conversation& c, const Instruction& in, Round& round);
   void do_add(Conversation& c, const Instruction& in, Round& round);
   void do_revise(Conversation& c, const Instruction& in, Round& round);
+  bool replan_revised(Conversation& c, int index, const nlohmann::json& said, const std::string& text);
   void do_remove_added(Conversation& c, const Instruction& in, Round& round);
   void do_abstract(Conversation& c, const Instruction& in, Round& round);
   // Asks the motion agent for v's trajectory and stores it; false (and unresolved) when it

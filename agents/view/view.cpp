@@ -43,20 +43,33 @@ Words with_units(Words w) {
     if (w[i - 1] != "and" || !text::number_at(w, i, &used) || used != 1) continue;
     if (!direction_word(w[i + 1]) && w[i + 1] != "to") continue;
     const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)),
-                                         {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
+                                         {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm", "lanes", "lane"});
     if (!before.empty()) w.insert(w.begin() + long(i) + 1, w[before.back().end - 1]);
   }
   return w;
 }
 
-void add_translations(const Words& w, ViewChange& v) {
+void add_translations(const Words& w_in, ViewChange& v) {
+  Words w = w_in;
+  // "back the camera up 5 m", "back up": the verb is the direction, "up" only its particle.
+  if (!w.empty() && w[0] == "back")
+    for (size_t i = 1; i < std::min<size_t>(w.size(), 4); ++i)
+      if (w[i] == "up") {
+        w[i] = "_";
+        break;
+      }
   const Words wu = with_units(w);
-  const auto distances = text::quantities(wu, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm"});
+  const auto distances =
+      text::quantities(wu, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm", "lanes", "lane"});
   const bool lead = directions_lead(wu, distances);
   for (size_t k = 0; k < distances.size(); ++k) {
     const auto& q = distances[k];
     const std::string unit = wu[q.end - 1];
-    const double f = (unit == "feet" || unit == "foot" || unit == "ft") ? 0.3048 : (unit == "centimeters" || unit == "cm") ? 0.01 : 1.0;
+    // "two lanes to the left": a lane is taken as 3.5 m wide.
+    const double f = (unit == "feet" || unit == "foot" || unit == "ft")       ? 0.3048
+                     : (unit == "centimeters" || unit == "cm")                ? 0.01
+                     : (unit == "lanes" || unit == "lane")                    ? 3.5
+                                                                              : 1.0;
     auto after = [&]() -> std::optional<std::pair<int, double>> {
       const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : wu.size();
       for (size_t i = q.end; i < std::min(next_start, q.end + 4); ++i) {

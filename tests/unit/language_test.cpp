@@ -293,3 +293,34 @@ TEST(Language, LaneEdgesAreLanesNotVehiclesToPlaceBy) {
   EXPECT_FALSE(m.lane_edge);
   EXPECT_EQ(m.lane, "parking");
 }
+
+TEST(Language, DeletionsByRoadSideListsAndWishes) {
+  auto d = deletion::parse_deletion("wipe out every parked vehicle on my side");
+  ASSERT_EQ(d.targets.size(), 1u);
+  EXPECT_EQ(d.targets[0].road_side, "near");
+  EXPECT_EQ(deletion::parse_deletion("take out whatever is parked across the road").targets[0].road_side, "far");
+  // The commas are gone by then: a determiner right after a noun starts the next phrase.
+  d = deletion::parse_deletion("remove the red car the truck and the motorbike");
+  ASSERT_EQ(d.targets.size(), 3u);
+  EXPECT_EQ(d.targets[1].category, "vehicle.truck");
+  EXPECT_EQ(manager::decompose("I don't want the white car in the shot")[0].kind, "delete");
+  // "get" is a deletion only with rid/out/away; "get it to ..." asks it to do something.
+  EXPECT_EQ(manager::decompose("get rid of the bus")[0].kind, "delete");
+  EXPECT_EQ(manager::decompose("get it to drive off")[0].kind, "revise");
+}
+
+TEST(Language, ViewPhrasalVerbsAndLaneWidths) {
+  EXPECT_EQ(*view::parse_view("back the camera up five metres and bring it down a metre").translation_m,
+            (std::array<double, 3>{-5, 0, -1}));
+  EXPECT_EQ(*view::parse_view("move the camera to the left by two lanes").translation_m,
+            (std::array<double, 3>{0, 7, 0}));
+}
+
+TEST(Language, CopiesAttributesAndPoliceControls) {
+  auto in = manager::decompose("another one behind that");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_EQ(in[0].target, "it");  // a copy of the vehicle spoken about last
+  EXPECT_EQ(manager::decompose("change the colour to dark green")[0].kind, "revise");
+  EXPECT_EQ(manager::decompose("I want the police stopping traffic up ahead")[0].kind, "road_block");
+}
