@@ -5,7 +5,8 @@ They differ from the dev layout on purpose: a one-way three-lane street with par
 and side streets on both sides; a two-lane road that curves left, with a bus bay and a side street
 to the left; a divided road, three lanes each way, a crossroads at 50 m, parking on the right; a
 T junction (v3); an undivided avenue, two lanes each way, parking both sides, staggered side
-streets left and right (v6).
+streets left and right (v6); a road bending right with kerbside parking on the left and a side
+street to the right (v7).
 Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no randomness).
 """
 import json
@@ -234,7 +235,42 @@ def avenue():
           "staggered side streets", lanes, east(0), 8, objects)
 
 
+def right_bend_pts(x_start, y_offset, radius=120.0, degrees=50.0, x_from=-60.0, step=5.0):
+    """A road along +x that bends right at x_start (centre of the bend on the right); y_offset: lane offset."""
+    pts = [[x, y_offset, 0.0] for x in frange(x_from, x_start, step)]
+    r = radius + y_offset
+    n = int(math.radians(degrees) * radius / step)
+    for k in range(1, n + 1):
+        a = math.radians(degrees) * k / n
+        pts.append([x_start + r * math.sin(a), -radius + r * math.cos(a), 0.0])
+    return pts
+
+
+def right_bend():
+    """Two-lane road (one each way) bending right from x=40, parking on the left to x=30, a side street
+    to the right at x=10."""
+    ego = right_bend_pts(40, 0)
+    oncoming = list(reversed(right_bend_pts(40, 3.5)))
+    lanes = [lane("eastbound", ego), lane("westbound", oncoming),
+             lane("parking_left", line(30, 6.5, -60, 6.5), 2.5, "parking"),
+             lane("side_south", line(11.75, -1.75, 11.75, -80)), lane("side_north", line(8.25, -80, 8.25, -1.75))]
+    length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(oncoming, oncoming[1:]))
+    objects = [obj(1, "vehicle.car", static(0, 6.5, math.pi), "red"),
+               obj(2, "vehicle.car", static(20, 6.5, math.pi), "white", SIZES["suv"]),
+               obj(3, "vehicle.car", track_along(ego, 90, 8), "silver"),
+               obj(4, "vehicle.truck", track_along(oncoming, length - 150, 9), "black"),
+               obj(5, "vehicle.car", track_along(oncoming, length - 40, 10), "yellow"),
+               obj(6, "vehicle.car", static(8.25, -12, math.pi / 2), "blue"),
+               obj(7, "vehicle.motorcycle", track_along(ego, 45, 9), "green"),
+               obj(8, "human.pedestrian.adult", static(25, -6)),
+               obj(9, "movable_object.trafficcone", static(28, 6.5), "orange"),
+               obj(10, "vehicle.emergency.police", static(-10, 6.5, math.pi), "white")]
+    write("blind-rightbend", "hand-made layout: two-lane road bending right, parking left, side street right",
+          lanes, ego, 7, objects)
+
+
 if __name__ == "__main__":
+    right_bend()
     avenue()
     oneway()
     curve()
