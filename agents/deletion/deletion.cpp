@@ -148,7 +148,8 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
     else if (text::has_any(p, {"in front of it", "ahead of it"})) s.of_previous = "front";
     else if (text::has_any(p, {"next to it", "beside it", "alongside it"})) s.of_previous = "beside";
   }
-  if (text::has_any(p, {"following me", "following us", "tailing me", "tailing us"})) {
+  if (text::has_any(p, {"following me", "following us", "tailing me", "tailing us", "tailgating me", "tailgating us",
+                        "on my tail", "on our tail", "right behind me", "right behind us"})) {
     s.lane = "ego";
     s.region = "back";
   }
@@ -392,6 +393,13 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     for (const auto& c : cands)
       if (matches(t, c)) m.push_back(&c);
     if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
+    // "the bike" with no bicycle about: a motorbike is a bike too.
+    if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) {
+      Selector motorbike = t;
+      motorbike.category = "vehicle.motorcycle";
+      for (const auto& c : cands)
+        if (matches(motorbike, c)) m.push_back(&c);
+    }
     if (m.empty()) {
       out.problems.push_back("no " + describe(t).substr(t.quantity == "all" ? 6 : 4) + " in the scene" +
                              (removed.empty() ? "" : " (or it was already removed)"));

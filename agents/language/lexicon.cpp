@@ -78,9 +78,10 @@ struct Noun {
   bool plural;
 };
 
-// Longest phrases first so "police car" wins over "car".
+// Longest phrases first (sorted below) so "police car" wins over "car", "people carrier" over "people".
 const std::vector<Noun>& nouns() {
-  static const std::vector<Noun> n{
+  static const std::vector<Noun> n = [] {
+    std::vector<Noun> list{
       {"police cars", "police", true},   {"police car", "police", false},     {"police vehicles", "police", true},
       {"police vehicle", "police", false}, {"cop cars", "police", true},      {"cop car", "police", false},
       {"patrol cars", "police", true},   {"patrol car", "police", false},     {"police cruiser", "police", false},
@@ -114,7 +115,27 @@ const std::vector<Noun>& nouns() {
       {"person", "pedestrian", false},   {"persons", "pedestrian", true},    {"walkers", "pedestrian", true},
       {"objects", "object", true},       {"things", "object", true},         {"traffic", "car", true},
       {"cyclists", "bicycle", true},     {"cyclist", "bicycle", false},       {"tankers", "truck", true},
-      {"tanker", "truck", false},        {"motorbike rider", "motorcycle", false}};
+      {"tanker", "truck", false},        {"motorbike rider", "motorcycle", false},
+      // Kinds of truck, van, car and two-wheeler by what they do or how they are built.
+      {"cement mixers", "truck", true},  {"cement mixer", "truck", false},    {"concrete mixer", "truck", false},
+      {"mixer truck", "truck", false},   {"dump trucks", "truck", true},      {"dump truck", "truck", false},
+      {"tipper truck", "truck", false},  {"tipper", "truck", false},          {"box truck", "truck", false},
+      {"flatbed", "truck", false},       {"tow trucks", "truck", true},       {"tow truck", "truck", false},
+      {"recovery truck", "truck", false}, {"garbage trucks", "truck", true},  {"garbage truck", "truck", false},
+      {"bin truck", "truck", false},     {"refuse truck", "truck", false},    {"big rig", "truck", false},
+      {"18 wheeler", "truck", false},    {"articulated truck", "truck", false}, {"hgv", "truck", false},
+      {"delivery vans", "van", true},    {"delivery van", "van", false},      {"panel van", "van", false},
+      {"camper van", "van", false},      {"campervan", "van", false},         {"minibus", "van", false},
+      {"people carrier", "van", false},  {"station wagon", "car", false},     {"estate car", "car", false},
+      {"saloon", "car", false},          {"limousine", "car", false},         {"limo", "car", false},
+      {"supercar", "car", false},        {"muscle car", "car", false},        {"roadster", "car", false},
+      {"4x4", "suv", false},             {"off roader", "suv", false},        {"mopeds", "motorcycle", true},
+      {"moped", "motorcycle", false},    {"scooters", "motorcycle", true},    {"dirt bike", "motorcycle", false}};
+    std::stable_sort(list.begin(), list.end(), [](const Noun& a, const Noun& b) {
+      return text::words(a.phrase).size() > text::words(b.phrase).size();
+    });
+    return list;
+  }();
   return n;
 }
 

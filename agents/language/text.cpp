@@ -225,4 +225,16 @@ std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initial
   return out;
 }
 
+void turns_to_degrees(std::vector<std::string>& w) {
+  static const std::pair<const char*, const char*> kTurns[] = {
+      {"a quarter of a turn", "90"}, {"a quarter turn", "90"}, {"quarter turn", "90"}, {"half a turn", "180"},
+      {"a half turn", "180"},        {"half turn", "180"},      {"a right angle", "90"}, {"a full turn", "360"}};
+  for (const auto& [phrase, degrees] : kTurns)
+    for (size_t at = find_phrase(w, phrase); at != std::string::npos; at = find_phrase(w, phrase)) {
+      const size_t n = words(phrase).size();
+      w.erase(w.begin() + long(at), w.begin() + long(at + n));
+      w.insert(w.begin() + long(at), {degrees, "degrees"});
+    }
+}
+
 }  // namespace chatsim::agents::text

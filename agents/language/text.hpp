@@ -36,4 +36,8 @@ std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initial
 
 bool is_number_word(const std::string& w);
 
+// Amounts said as fractions of a turn ("a quarter turn", "half a turn", "a right angle") become
+// degrees ("90 degrees") so that every agent reads them as angles.
+void turns_to_degrees(std::vector<std::string>& w);
+
 }  // namespace chatsim::agents::text

@@ -147,12 +147,16 @@ void Manager::do_view(Conversation& c, const Instruction& in, Round& round) {
 }
 
 void Manager::do_delete(Conversation& c, const Instruction& in, Round& round) {
-  // A brand (recorded objects carry none) or an order word, with vehicles added: the user speaks
-  // of what was added ("remove the Porsche", "delete the first van", "remove the last one").
+  // A brand (recorded objects carry none), an order word, or the colour of one vehicle added in
+  // this conversation: the user speaks of what was added ("remove the Porsche", "delete the
+  // first van", "delete the red car" just after adding one).
   if (!c.added.empty()) {
     const auto w = text::words(in.text);
     const std::string ref = reference_in(in.text);
-    const bool named = !lexicon::find_brands(w).empty() || text::has_any(w, {"first", "second", "third", "last"});
+    const bool one_by_colour = !lexicon::find_colors(w).empty() &&
+                               !text::has_any(w, {"all", "every", "each", "parked", "recorded", "original", "other"});
+    const bool named = !lexicon::find_brands(w).empty() || text::has_any(w, {"first", "second", "third", "last"}) ||
+                       one_by_colour;
     if (named && ref != "it" && !resolve(c, ref).empty()) {
       do_remove_added(c, {"remove_added", in.text, ref, 1}, round);
       return;

@@ -46,6 +46,19 @@ std::optional<RelativePlacement> find_relative(Words& w) {
         for (const char* s : stops) stop = stop || w[end] == s;
         if (stop && end > after) break;
       }
+      // "the silver car doing 60 km/h": the reference ends with its noun (and "i added").
+      const Words window(w.begin() + long(after), w.begin() + long(end));
+      const auto nouns = lexicon::find_types(window);
+      const auto makes = lexicon::find_brands(window);
+      size_t noun_end = std::string::npos;
+      if (!nouns.empty()) noun_end = nouns.front().end;
+      if (!makes.empty()) noun_end = std::min(noun_end, makes.front().end);
+      if (noun_end != std::string::npos) {
+        end = after + noun_end;
+        while (end < w.size() && (w[end] == "i" || w[end] == "we" || w[end] == "you" || w[end] == "added" ||
+                                  w[end] == "just" || w[end] == "one"))
+          ++end;
+      }
       std::string ref = text::join(w, after, end);
       if (ref.empty() || ref == "the" || ref == "traffic" || ref == "the traffic" || ref == "the road" ||
           ref == "the other" || ref == "each other" || ref == "one another" || ref == "the other one")
@@ -178,6 +191,10 @@ std::optional<std::string> lane_change_to(Words& w) {
 }
 
 std::optional<std::string> find_action(const Words& w) {
+  // "waiting at the junction to turn right", "about to pull out": what it will do after the
+  // clip; now it stands (unless it is said to go on, "waits, then turns").
+  if ((has_any(w, {"waiting", "waits", "about to", "ready to", "preparing to"})) && !has_any(w, {"then", "before"}))
+    return "static";
   const bool lane_change = has_any(w, {"change lanes", "changes lanes", "changing lanes", "change lane",
                                        "changes lane", "changing lane", "lane change", "switch lanes",
                                        "switches lanes", "switching lanes", "merge", "merges", "merging"});
@@ -384,8 +401,9 @@ MotionIntent parse_motion(const std::string& instruction) {
   m.action = change_to ? change_to : find_action(w);
   // "turning into the side street on the left": the street's side is the turn's.
   if (!m.action && turning && target_side) m.action = "turn_" + *target_side;
-  // Out of a side street onto the road: which way it turns is the road's to say (the planner's).
-  if (m.lane == "cross" && m.action != "static" &&
+  // Out of a side street onto the road: which way it turns is the road's to say (the planner's),
+  // unless the user said it ("pulls out of the side street and turns right").
+  if (m.lane == "cross" && m.action != "static" && m.action != "turn_left" && m.action != "turn_right" &&
       has_any(w, {"coming out of", "pulling out of", "emerging from", "coming from", "out of the", "turning out of",
                   "joining from", "onto our road", "onto the road", "onto the main road", "join the road"}))
     m.action = "join";

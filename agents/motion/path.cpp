@@ -85,7 +85,6 @@ constexpr double kJunctionReachM = 12.0;
 
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length) {
   const double travel_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
-  const double radius = 9.0;
   // Crossing streets, then side streets that meet this lane (T junctions), nearest first.
   auto meets = map.crossings(lane);
   for (const auto& j : map.junctions(lane, kJunctionReachM)) meets.push_back(j);
@@ -93,7 +92,12 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
                    [&](const scene::LaneCrossing& a, const scene::LaneCrossing& b) { return dir * a.s_self < dir * b.s_self; });
   for (const auto& c : meets) {
     const double ahead = dir * (c.s_self - s0);
-    if (ahead < radius + 1) continue;  // too close to turn smoothly
+    // A smooth turn, or a tight one from near the end of a side street (its mouth: the lane it
+    // turns into lies beyond the street's end).
+    const bool street_ends_here = std::abs(c.s_self - (dir > 0 ? map.lanes()[size_t(lane)].length() : 0.0)) < 0.5;
+    double radius = 9.0;
+    if (ahead < radius + 1 && street_ends_here) radius = 5.0;
+    if (ahead < radius + 1 && !(street_ends_here && ahead >= 1.0)) continue;
     const auto& other = map.lanes()[size_t(c.other)];
     if (other.type != "driving") continue;
     const double other_yaw = map.travel_yaw_at(c.other, c.s_other);
@@ -104,7 +108,7 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
     const double exit_s = c.s_other + other_dir * radius;
     if (exit_s < 0 || exit_s > other.length()) continue;
     TurnPlan plan;
-    plan.path = lane_path(map, lane, s0, dir, ahead - radius);
+    plan.path = lane_path(map, lane, s0, dir, std::max(0.0, ahead - radius));
     const size_t before = plan.path.points.size();
     append_hermite(plan.path, map.point_at(c.other, exit_s), other_yaw);
     plan.connector.assign(plan.path.points.begin() + long(before), plan.path.points.end());

@@ -82,8 +82,14 @@ double Planner::lane_hint_penalty(int lane, double s) const {
   if (*m_.lane == "oncoming") return l.type == "driving" && !same_way_as_ego(lane, s) ? std::abs(lat) * 0.5 : 60;
   if (*m_.lane == "left") return l.type == "driving" && lat > 1.5 && lat < 5.5 ? 0 : 60;
   if (*m_.lane == "right") return l.type == "driving" && lat < -1.5 && lat > -5.5 ? 0 : 60;
-  if (*m_.lane == "cross")  // a lane across the ego's: a side or cross street
-    return l.type == "driving" && std::abs(std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw))) < 0.5 ? 0 : 60;
+  if (*m_.lane == "cross") {  // a lane across the ego's: a side or cross street
+    if (l.type != "driving" || std::abs(std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw))) >= 0.5) return 60;
+    // Turning out of a side street: its lane toward the road, not the one leading away from it.
+    const bool turns_out = m_.action == "turn_left" || m_.action == "turn_right" || m_.action == "join";
+    const double here = std::abs(ego_.to_ego(scene_.lanes.point_at(lane, s)).y());
+    const double at_end = std::abs(ego_.to_ego(scene_.lanes.point_at(lane, l.length())).y());
+    return turns_out && at_end > here ? 60 : 0;
+  }
   return 0;
 }
 
@@ -95,7 +101,10 @@ std::optional<double> Planner::direction_score(int lane, double s, int dir, bool
   const double motion_yaw = heading + (backward ? kPi : 0);
   const Eigen::Vector2d p = scene_.lanes.point_at(lane, s);
   const bool toward = dir_of(motion_yaw).dot(ego_.p - p) > 0;
-  if (m_.direction && (*m_.direction == "toward") != toward) return std::nullopt;
+  // "turning out of the side street, heading away from us": a turn's direction is where it goes
+  // after the turn, not how it starts.
+  const bool turns = m_.action == "turn_left" || m_.action == "turn_right" || m_.action == "join";
+  if (m_.direction && !turns && (*m_.direction == "toward") != toward) return std::nullopt;
   double score = 0;
   if (!m_.direction && !m_.wrong_way && !m_.lane) {
     // Unsaid: traffic in the ego's direction is the usual picture.
@@ -178,7 +187,7 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
         if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(pe.y());
         if (placement == "left" || placement == "right") c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x());
-        if (parked && movable_ && !parking && (m_.action == "static")) c.score += 4;  // parked cars belong at the kerb
+        if (parked && movable_ && !parking && (m_.action == "static")) c.score += 8;  // parked cars belong at the kerb
         if (!movable_ && parking) c.score += 3;
         // Coming down a side street: some way up it, so that it is seen coming, not born at the mouth.
         if (!parked && m_.lane == "cross") c.score += 0.5 * std::abs(std::abs(pe.y()) - 15.0);

@@ -324,3 +324,41 @@ TEST(Language, CopiesAttributesAndPoliceControls) {
   EXPECT_EQ(manager::decompose("change the colour to dark green")[0].kind, "revise");
   EXPECT_EQ(manager::decompose("I want the police stopping traffic up ahead")[0].kind, "road_block");
 }
+
+TEST(Language, RequestsWishesTitlesAndEnumerations) {
+  EXPECT_EQ(manager::decompose("Could we have a Volkswagen Golf in the side street?")[0].kind, "add");
+  EXPECT_EQ(manager::decompose("the motorbike behind me has to go")[0].kind, "delete");
+  EXPECT_EQ(manager::decompose("Take the camera 5 m further back")[0].kind, "view");
+  EXPECT_EQ(manager::decompose("Put it 20 m further back.")[0].kind, "revise");
+  EXPECT_EQ(manager::decompose("Put the bus back.")[0].kind, "restore");
+  auto in = manager::decompose("Now a grey one behind it.");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_EQ(in[0].target, "it");
+  // A title before a colon goes when the detail after it does the work; a bare plural after a
+  // comma in an addition is added too.
+  in = manager::decompose("Simulate a breakdown: a broken-down van in my lane 35 m ahead, cones behind it.");
+  ASSERT_EQ(in.size(), 2u);
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_EQ(in[1].kind, "add");
+  EXPECT_EQ(in[1].text, "add cones behind it");
+  EXPECT_EQ(manager::decompose("remove the trucks, cars and vans").size(), 1u);
+  // "a quarter turn" is an angle.
+  EXPECT_EQ(manager::decompose("look right by a quarter turn")[0].text, "look right by 90 degrees");
+}
+
+TEST(Language, ReferencesEndWithTheirNounAndWaitingVehiclesStand) {
+  auto m = motion::parse_motion("put a ford mustang in front of the silver car doing 60 km/h");
+  ASSERT_TRUE(m.relative);
+  EXPECT_EQ(m.relative->to, "the silver car");
+  EXPECT_NEAR(*m.speed_mps, 60 / 3.6, 1e-9);
+  EXPECT_EQ(motion::parse_motion("a cement mixer waiting at the junction to turn right").action, "static");
+  EXPECT_EQ(motion::parse_motion("a truck that waits, then turns right").action, "turn_right");
+  // An explicit turn out of a side street stands; without one the road decides (join).
+  EXPECT_EQ(motion::parse_motion("a car pulls out of the side street on the left and turns right").action, "turn_right");
+  EXPECT_EQ(motion::parse_motion("a car coming out of the side street").action, "join");
+  const auto cement = lexicon::find_types(text::words("a cement mixer"));
+  ASSERT_EQ(cement.size(), 1u);
+  EXPECT_EQ(cement[0].type.type, "truck");
+  EXPECT_EQ(lexicon::find_types(text::words("a people carrier"))[0].type.type, "van");
+}

@@ -1,0 +1,285 @@
+// What one clause of a command is: an addition, deletion, revision, view change, restore, an
+// abstract scene, or unclear (the offline interpreter's part of the manager).
+#include "agents/manager/classify.hpp"
+
+#include <algorithm>
+
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+
+namespace chatsim::agents::manager::detail {
+
+using Words = std::vector<std::string>;
+using text::has_any;
+
+const std::vector<std::string>& add_verbs() {
+  static const std::vector<std::string> v{"add", "adds", "put", "place", "insert", "spawn", "create", "include",
+                                          "generate", "introduce", "bring", "drop", "park", "position", "there"};
+  return v;
+}
+const std::vector<std::string>& delete_verbs() {
+  static const std::vector<std::string> v{"remove", "delete", "erase", "get", "eliminate", "clear", "take", "wipe",
+                                          "hide", "lose", "ditch"};
+  return v;
+}
+
+bool mentions_vehicle(const Words& w) {
+  for (const auto& t : lexicon::find_types(w))
+    if (t.type.type != "object" && t.type.type != "pedestrian") return true;
+  return !lexicon::find_brands(w).empty();
+}
+
+namespace {
+
+bool refers_to_added(const Words& w_in) {
+  // "leave the bus where it is": that "it" is the bus, not something added.
+  Words w = w_in;
+  for (const char* p : {"where it is", "as it is", "where they are", "as they are", "where it was", "in its place"})
+    for (size_t at = text::find_phrase(w, p); at != std::string::npos; at = text::find_phrase(w, p))
+      w.erase(w.begin() + long(at), w.begin() + long(at + text::words(p).size()));
+  return has_any(w, {"it", "its", "them", "their", "both", "they", "added", "new", "you added", "i added", "we added",
+                     "inserted", "that car", "this car", "the one"});
+}
+
+// Clauses that are one thing as a whole: a restore, an abstract scene, "no parked cars", an empty
+// road. False when the clause is none of these.
+bool classify_whole(const Words& c, Instruction& in) {
+  const std::string first = c.front();
+  if (has_any(c, {"put back", "bring back", "restore", "undo the deletion", "undo the removal", "undelete",
+                  "add back", "re-add", "readd", "put it back", "put them back", "undo", "add it back",
+                  "add them back", "bring it back", "bring them back", "keep it", "keep that", "keep them",
+                  "never mind", "nevermind"}) ||
+      // "put the bus back", "bring the red car back"; not "put it 20 m further back" (a move)
+      ((first == "put" || first == "bring") && c.size() > 2 && c.back() == "back" &&
+       !has_any(c, {"further", "farther", "more"}) &&
+       text::quantities(c, {"meters", "meter", "m", "feet", "ft"}).empty())) {
+    in.kind = "restore";
+    in.target = in.text;
+    return true;
+  }
+  if (has_any(c, {"traffic jam", "congestion", "gridlock", "stuck in traffic", "bumper to bumper", "jammed", "queue of",
+                  "tailback", "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
+    in.kind = "traffic_jam";
+    return true;
+  }
+  if (has_any(c, {"busy road", "busy street", "heavy traffic", "rush hour", "lots of traffic", "crowded road",
+                  "dense traffic", "busy", "more traffic", "lot of traffic"})) {
+    in.kind = "busy_road";
+    return true;
+  }
+  // "no parked cars", "nothing parked anywhere": what should not be there is to be removed.
+  if ((first == "no" || first == "nothing") && c.size() > 1 &&
+      (mentions_vehicle(c) || has_any(c, {"parked", "moving", "stopped"}))) {
+    in.kind = "delete";
+    in.text = "remove all " + text::join(c, 1) + (mentions_vehicle(c) ? "" : " vehicles");
+    return true;
+  }
+  if (has_any(c, {"road empty", "empty road", "empty the road", "empty street", "street empty", "no cars", "no vehicles",
+                  "clear the road", "clear the street", "deserted", "without any cars", "without cars", "without vehicles",
+                  "no traffic", "road clear", "street clear", "road is empty"})) {
+    in.kind = "delete";
+    in.text = "remove all vehicles";
+    return true;
+  }
+  if (has_any(c, {"stopping traffic", "stopping the traffic", "stop the traffic", "stop traffic", "halting traffic",
+                  "halt the traffic", "holding up traffic", "police stop", "police control"}) ||
+      has_any(c, {"road block", "roadblock", "road blockade", "checkpoint", "block the road", "block off the road",
+                  "block the street", "block off the street", "barricade the road", "barricade the street",
+                  "police barricade", "police cordon", "cordon off"})) {
+    in.kind = "road_block";
+    return true;
+  }
+  if (has_any(c, {"construction zone", "construction site", "road work", "road works", "roadwork", "roadworks", "work zone",
+                  "construction area", "lane closure", "road closure", "close the lane", "closed lane"})) {
+    in.kind = "construction_zone";
+    return true;
+  }
+  return false;
+}
+
+// "a navy suv should be added 40 m ahead", "i want a van placed behind me": the passive of an
+// addition said in the active ("add a navy suv 40 m ahead"). The words unchanged otherwise.
+Words active_addition(const Words& c) {
+  static const char* participles[] = {"added", "placed", "put", "inserted", "spawned", "created", "included",
+                                      "introduced", "positioned", "dropped", "generated"};
+  for (size_t i = 1; i < c.size(); ++i) {
+    if (std::none_of(std::begin(participles), std::end(participles), [&](const char* p) { return c[i] == p; })) continue;
+    const bool be = c[i - 1] == "be" || c[i - 1] == "been" || c[i - 1] == "being" || c[i - 1] == "get" || c[i - 1] == "is" ||
+                    c[i - 1] == "are";
+    // "want a van placed": a vehicle noun right before, not "the car i added" nor "the added car".
+    const Words head(c.begin(), c.begin() + long(i));
+    // "the added car should be placed ahead", "it should be put behind": a revision, not new.
+    if (has_any(head, {"the", "that", "this", "it", "them", "they", "its"})) continue;
+    const auto types = lexicon::find_types(head);
+    const bool wanted = !types.empty() && types.back().end == i && has_any(c, {"want", "need", "like", "have", "get"});
+    if (!be && !wanted) continue;
+    size_t from = i;
+    while (from > 0 && (c[from - 1] == "be" || c[from - 1] == "been" || c[from - 1] == "being" || c[from - 1] == "get" ||
+                        c[from - 1] == "is" || c[from - 1] == "are" || c[from - 1] == "should" || c[from - 1] == "must" ||
+                        c[from - 1] == "shall" || c[from - 1] == "will" || c[from - 1] == "would" || c[from - 1] == "to" ||
+                        c[from - 1] == "needs" || c[from - 1] == "has" || c[from - 1] == "have"))
+      --from;
+    Words out{"add"};
+    size_t start = 0;
+    // "i want / we need / i'd like ... a van placed": the wish goes too.
+    for (size_t k = 0; k < from; ++k)
+      if (c[k] == "a" || c[k] == "an" || c[k] == "some" || c[k] == "another" || text::is_number_word(c[k]) ||
+          lexicon::find_types(Words(c.begin() + long(k), c.begin() + long(from))).size() > 0) {
+        start = k;
+        break;
+      }
+    out.insert(out.end(), c.begin() + long(start), c.begin() + long(from));
+    out.insert(out.end(), c.begin() + long(i) + 1, c.end());
+    return out;
+  }
+  return c;
+}
+
+// "a pickup should come out of the side street": a vehicle named with "a" as the subject is new.
+bool indefinite_vehicle_subject(const Words& c) {
+  if (c.size() < 2 || !(c[0] == "a" || c[0] == "an" || c[0] == "another" || (text::is_number_word(c[0]) && c[0] != "half")))
+    return false;
+  if (c[1] == "of" || c[1] == "bit" || c[1] == "little") return false;  // "one of the cars", "a bit further"
+  const auto types = lexicon::find_types(c);
+  const auto brands = lexicon::find_brands(c);
+  const bool vehicle_type = !types.empty() && types.front().type.type != "pedestrian";
+  const size_t noun = std::min(vehicle_type ? types.front().begin : c.size(), brands.empty() ? c.size() : brands.front().begin);
+  return noun >= 1 && noun <= 4 && noun < c.size();  // "2 m forward": the number itself is no model name
+}
+
+bool starts_with(const Words& c, const std::vector<std::string>& verbs) {
+  return std::find(verbs.begin(), verbs.end(), c.front()) != verbs.end();
+}
+
+// A deletion, said by its verb or its result ("I'd like the bus gone").
+bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction& in) {
+  const std::string& first = c.front();
+  // "I'd like the bus gone", "I want the red car removed", "I don't want the van in the shot": a
+  // deletion said by its result.
+  if (vehicle && !starts_with(c, add_verbs()) &&
+      has_any(c, {"gone", "removed", "deleted", "erased", "out of the way", "out of the picture", "out of the scene",
+                  "out of the shot", "out of shot", "don't want", "dont want", "do not want", "don't need",
+                  "do not need", "no longer want", "not want", "has to go", "have to go", "must go", "should go",
+                  "needs to go", "can go", "got to go", "has got to go"})) {
+    in.kind = added_ref ? "remove_added" : "delete";
+    in.target = added_ref ? in.text : "";
+    in.text = "remove " + in.text;
+    return true;
+  }
+  // "get it to drive off" is a revision; "get rid of it", "get the bus out of here" a deletion.
+  const bool causative_get = first == "get" && !has_any(c, {"get rid", "out", "away", "off the road", "gone"});
+  // "take the camera 5 m back": a view moved with a verb that otherwise deletes.
+  const bool moves_view = !vehicle && has_any(c, {"camera", "view", "viewpoint"});
+  if ((starts_with(c, delete_verbs()) && !causative_get && !moves_view) ||
+      has_any(c, {"get rid of", "take away", "take out"})) {
+    in.kind = added_ref ? "remove_added" : "delete";
+    in.target = added_ref ? in.text : "";
+    return true;
+  }
+  return false;
+}
+
+// An addition: by its verb, a new subject ("a pickup should come out..."), a copy ("another
+// one"), or a dangerous cut-in. A named thing that cannot be added is unclear, with the thing.
+bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
+  const std::string& first = c.front();
+  const bool add_verb = starts_with(c, add_verbs());
+  if (has_any(c, {"dangerous", "cut in", "cuts in", "cutting in", "cut off", "cuts off", "cutting me off"}) && !add_verb) {
+    in.kind = "add";
+    std::string t = in.text;
+    if (!vehicle) t += " car";
+    if (!has_any(c, {"cut in", "cuts in", "cutting in", "cut off", "cutting me off", "cuts off"})) t += " cutting in";
+    if (!has_any(c, {"left", "right"})) t += " left front";
+    in.text = t;
+    return true;
+  }
+  if (indefinite_vehicle_subject(c) && !has_any(c, {"what", "why", "how", "who", "which"})) {
+    in.kind = "add";
+    return true;
+  }
+  // "another one behind that", "one more on the left", "a grey one behind it": a copy of the
+  // vehicle spoken about last.
+  const auto one_at = std::find(c.begin(), c.end(), "one");
+  const bool described_one = (first == "a" || first == "an") && one_at != c.end() && one_at - c.begin() <= 3 &&
+                             std::all_of(c.begin() + 1, one_at, [](const std::string& x) {
+                               return lexicon::is_color_word(x) || x == "dark" || x == "light" || x == "bright" ||
+                                      x == "new" || x == "similar" || x == "bigger" || x == "smaller";
+                             });
+  if ((first == "another" || (c.size() > 1 && first == "one" && c[1] == "more") || described_one) && !vehicle) {
+    in.kind = "add";
+    in.target = "it";
+    in.text = "add " + in.text;
+    return true;
+  }
+  if (!add_verb) return false;
+  // "add a flying saucer above the bus": what is to be added is no vehicle, whatever follows.
+  const auto bad = lexicon::unsupported_noun(c);
+  const auto types = lexicon::find_types(c);
+  if (bad && (types.empty() || text::find_phrase(c, *bad) < types.front().begin)) {
+    in.kind = "unclear";
+    in.target = *bad;
+    return true;
+  }
+  if (vehicle || has_any(c, {"another", "one more", "one"})) {
+    in.kind = "add";
+    if (has_any(c, {"another", "one more", "another one", "same", "similar"}) &&
+        !mentions_vehicle(Words(c.begin() + 1, c.end())))
+      in.target = "it";
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Instruction classify(const Words& c_in) {
+  const Words c = active_addition(c_in);
+  Instruction in;
+  in.text = text::join(c);
+  if (classify_whole(c, in)) return in;
+  const bool vehicle = mentions_vehicle(c);
+  const bool added_ref = refers_to_added(c);
+  if (classify_deletion(c, vehicle, added_ref, in) || classify_addition(c, vehicle, in)) return in;
+  const bool add_verb = starts_with(c, add_verbs());
+  // "look behind", "turn around": with no vehicle named, the view turns.
+  const bool view_idiom = !vehicle && !added_ref &&
+                          has_any(c, {"look behind", "look back", "look backward", "look backwards", "turn around",
+                                      "face backward", "face backwards", "look the other way", "face the other way"});
+  const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
+                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom;
+  const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "get", "set", "put", "place", "position",
+                                       "push", "paint", "repaint", "respray", "recolor", "color", "turn",
+                                       "move", "speed", "slow", "swap", "replace", "switch", "should", "park", "stop",
+                                       "pull", "reverse", "accelerate", "brake"});
+  // "the white one", "the second one": a vehicle named by what tells it apart.
+  const bool one_ref = has_any(c, {"one", "ones"}) && !add_verb;
+  // "change the colour to green", "set the speed to 30 km/h": what is changed names no vehicle.
+  const bool attribute_ref = has_any(c, {"the color", "its color", "the paint", "the speed", "its speed", "the brand",
+                                         "the model", "the make", "the lane", "its lane"});
+  if (!view_words && (added_ref || vehicle || one_ref || attribute_ref) && revise_verb) {
+    in.kind = "revise";
+    in.target = reference_in(in.text);
+    return in;
+  }
+  const bool has_amount = !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty();
+  if (view_words ||
+      (has_amount && has_any(c, {"move", "shift", "raise", "lower", "rotate", "look", "pan", "tilt", "turn", "go", "slide",
+                                 "nudge"}))) {
+    in.kind = "view";
+    return in;
+  }
+  if (vehicle && !has_any(c, {"what", "why", "how", "who"})) {
+    in.kind = "add";
+    return in;
+  }
+  // "2 m forward", "another 10 degrees left": an amount and a direction with nothing else named
+  // moves the view.
+  if (has_amount && has_any(c, {"forward", "ahead", "back", "backward", "left", "right", "up", "down", "higher", "lower"})) {
+    in.kind = "view";
+    return in;
+  }
+  in.kind = "unclear";
+  return in;
+}
+
+}  // namespace chatsim::agents::manager::detail

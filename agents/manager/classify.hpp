@@ -1,0 +1,20 @@
+#pragma once
+// What one clause of a command is (classify.cpp): used by the decomposition only.
+#include <string>
+#include <vector>
+
+#include "agents/manager/decompose.hpp"
+
+namespace chatsim::agents::manager::detail {
+
+// Verbs that start an addition ("add", "put", "park" ...) or a deletion ("remove", "get" ...).
+const std::vector<std::string>& add_verbs();
+const std::vector<std::string>& delete_verbs();
+
+// A vehicle noun or make among the words (not a cone, barrier or pedestrian).
+bool mentions_vehicle(const std::vector<std::string>& words);
+
+// The instruction one clause (its words, lower case, typos corrected) asks for.
+Instruction classify(const std::vector<std::string>& clause);
+
+}  // namespace chatsim::agents::manager::detail
