@@ -6,7 +6,8 @@ and side streets on both sides; a two-lane road that curves left, with a bus bay
 to the left; a divided road, three lanes each way, a crossroads at 50 m, parking on the right; a
 T junction (v3); an undivided avenue, two lanes each way, parking both sides, staggered side
 streets left and right (v6); a road bending right with kerbside parking on the left and a side
-street to the right (v7).
+street to the right (v7); a wide crossroads, two lanes each way on both roads, the ego in the
+inner lane (v8).
 Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no randomness).
 """
 import json
@@ -269,7 +270,33 @@ def right_bend():
           lanes, ego, 7, objects)
 
 
+def crossroads():
+    """Two lanes each way (ego in the inner lane, y=3.5), a crossroads at x=40 with a road of two lanes
+    each way across, no parking; a bus stop bay on the right after the junction."""
+    east = lambda y: line(-60, y, 220, y)
+    west = lambda y: line(220, y, -60, y)
+    north = lambda x: line(x, -90, x, 90)
+    south = lambda x: line(x, 90, x, -90)
+    lanes = [lane("east_kerb", east(0)), lane("east_inner", east(3.5)), lane("west_inner", west(7)),
+             lane("west_kerb", west(10.5)), lane("north_kerb", north(47)), lane("north_inner", north(43.5)),
+             lane("south_inner", south(40)), lane("south_kerb", south(36.5)),
+             lane("bus_stop", line(60, -3, 90, -3), 3.0, "parking")]
+    objects = [obj(1, "vehicle.car", track_along(east(3.5), 85, 8), "blue"),
+               obj(2, "vehicle.car", track_along(east(0), 70, 8), "white", SIZES["suv"]),
+               obj(3, "vehicle.bus.rigid", static(75, -3), "green"),
+               obj(4, "vehicle.car", track_along(west(7), 90, 11), "black"),
+               obj(5, "vehicle.truck", track_along(west(10.5), 130, 6), "red"),
+               obj(6, "vehicle.car", static(40, 20, -math.pi / 2), "silver"),
+               obj(7, "vehicle.car", static(47, -15, math.pi / 2), "yellow"),
+               obj(8, "vehicle.motorcycle", track_along(east(0), 45, 10), "black"),
+               obj(9, "human.pedestrian.adult", track_along(line(33, -12, 33, 20), 0, 1.2)),
+               obj(10, "vehicle.car", track_along(east(3.5), 40, 8), "red")]
+    write("blind-crossroads", "hand-made layout: wide crossroads, two lanes each way on both roads, ego in the inner lane",
+          lanes, east(3.5), 8, objects)
+
+
 if __name__ == "__main__":
+    crossroads()
     right_bend()
     avenue()
     oneway()
