@@ -303,6 +303,14 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   }
   if (except_at != std::string::npos)
     for (const auto& p : phrases(w, except_at + except_len, w.size())) r.except.push_back(parse_phrase(p, nullptr));
+  // "everything parked on my right": people stand, they do not park.
+  if (text::has_any(w, {"parked", "parking"}) &&
+      std::any_of(r.targets.begin(), r.targets.end(), [](const Selector& t) { return t.category.empty(); })) {
+    Selector people;
+    people.category = "human";
+    people.quantity = "all";
+    r.except.push_back(people);
+  }
   // "all vehicles except the truck": an except list implies "all".
   if (!r.except.empty())
     for (auto& t : r.targets)

@@ -135,6 +135,38 @@ Words active_addition(const Words& c) {
   return c;
 }
 
+// "the red car behind us - delete it", "the bus, remove it": a topic named first, then the verb
+// with "it". Said the usual way round ("delete the red car behind us"); unchanged otherwise.
+Words topic_first(const Words& c) {
+  if (c.size() < 4 || (c[0] != "the" && c[0] != "that" && c[0] != "this" && c[0] != "those" && c[0] != "these"))
+    return c;
+  for (size_t v = 2; v + 1 < c.size(); ++v) {
+    const bool verb = std::find(delete_verbs().begin(), delete_verbs().end(), c[v]) != delete_verbs().end() ||
+                      c[v] == "make" || c[v] == "paint" || c[v] == "change" || c[v] == "move";
+    if (!verb || (c[v + 1] != "it" && c[v + 1] != "them")) continue;
+    if (!mentions_vehicle(Words(c.begin(), c.begin() + long(v)))) return c;
+    Words out{c[v]};
+    out.insert(out.end(), c.begin(), c.begin() + long(v));
+    out.insert(out.end(), c.begin() + long(v) + 2, c.end());
+    return out;
+  }
+  return c;
+}
+
+// "have a tahoe come from the right", "let a bus pull out": a new vehicle made to do something.
+Words causative_addition(const Words& c) {
+  if (c.size() < 3 || (c[0] != "have" && c[0] != "let" && c[0] != "make" && c[0] != "get")) return c;
+  if (c[1] != "a" && c[1] != "an" && !(text::is_number_word(c[1]) && c[1] != "half")) return c;
+  const auto types = lexicon::find_types(Words(c.begin() + 1, c.end()));
+  const auto brands = lexicon::find_brands(Words(c.begin() + 1, c.end()));
+  const bool vehicle = (!types.empty() && types.front().begin <= 4 && types.front().type.type != "pedestrian") ||
+                       (!brands.empty() && brands.front().begin <= 4);
+  if (!vehicle) return c;
+  Words out{"add"};
+  out.insert(out.end(), c.begin() + 1, c.end());
+  return out;
+}
+
 // "a pickup should come out of the side street": a vehicle named with "a" as the subject is new.
 bool indefinite_vehicle_subject(const Words& c) {
   if (c.size() < 2 || !(c[0] == "a" || c[0] == "an" || c[0] == "another" || (text::is_number_word(c[0]) && c[0] != "half")))
@@ -184,6 +216,8 @@ bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction
 bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
   const std::string& first = c.front();
   const bool add_verb = starts_with(c, add_verbs());
+  // "place the viewpoint one lane to the right": the view is placed, nothing is added.
+  if (!vehicle && has_any(c, {"camera", "view", "viewpoint"})) return false;
   if (has_any(c, {"dangerous", "cut in", "cuts in", "cutting in", "cut off", "cuts off", "cutting me off"}) && !add_verb) {
     in.kind = "add";
     std::string t = in.text;
@@ -199,16 +233,18 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
   }
   // "another one behind that", "one more on the left", "a grey one behind it": a copy of the
   // vehicle spoken about last.
+  const size_t article = add_verb ? 1 : 0;  // "add a white one behind it" as well
   const auto one_at = std::find(c.begin(), c.end(), "one");
-  const bool described_one = (first == "a" || first == "an") && one_at != c.end() && one_at - c.begin() <= 3 &&
-                             std::all_of(c.begin() + 1, one_at, [](const std::string& x) {
+  const bool described_one = c.size() > article && (c[article] == "a" || c[article] == "an") && one_at != c.end() &&
+                             one_at - c.begin() <= long(article) + 3 &&
+                             std::all_of(c.begin() + long(article) + 1, one_at, [](const std::string& x) {
                                return lexicon::is_color_word(x) || x == "dark" || x == "light" || x == "bright" ||
                                       x == "new" || x == "similar" || x == "bigger" || x == "smaller";
                              });
   if ((first == "another" || (c.size() > 1 && first == "one" && c[1] == "more") || described_one) && !vehicle) {
     in.kind = "add";
     in.target = "it";
-    in.text = "add " + in.text;
+    if (!add_verb) in.text = "add " + in.text;
     return true;
   }
   if (!add_verb) return false;
@@ -233,7 +269,7 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
 }  // namespace
 
 Instruction classify(const Words& c_in) {
-  const Words c = active_addition(c_in);
+  const Words c = causative_addition(topic_first(active_addition(c_in)));
   Instruction in;
   in.text = text::join(c);
   if (classify_whole(c, in)) return in;
@@ -264,7 +300,7 @@ Instruction classify(const Words& c_in) {
   const bool has_amount = !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty();
   if (view_words ||
       (has_amount && has_any(c, {"move", "shift", "raise", "lower", "rotate", "look", "pan", "tilt", "turn", "go", "slide",
-                                 "nudge"}))) {
+                                 "nudge", "drop", "lift", "step", "swing", "yaw", "bring"}))) {
     in.kind = "view";
     return in;
   }

@@ -32,7 +32,8 @@ bool starts_instruction(const std::string& w) {
   for (const auto* list : {&add_verbs(), &delete_verbs()})
     if (std::find(list->begin(), list->end(), w) != list->end()) return true;
   static const char* v[] = {"move", "shift", "raise", "lower", "rotate", "turn", "look", "pan", "tilt", "make",
-                            "change", "modify", "set", "paint", "repaint", "respray", "recolor", "restore", "undo", "simulate", "ego", "swap", "replace"};
+                            "change", "modify", "set", "paint", "repaint", "respray", "recolor", "restore", "undo", "simulate",
+                            "ego", "swap", "replace", "lift", "nudge", "step", "swing", "yaw"};
   for (const char* x : v)
     if (w == x) return true;
   return false;
@@ -274,11 +275,26 @@ std::vector<Instruction> decompose(const std::string& command) {
     std::string previous;
     for (const auto& c : clauses(w, comma)) {
       Instruction in = classify(c);
-      // "raise the camera 2 m and move it 1 m left": "it" is the camera of the clause before.
-      if (in.kind == "revise" && previous == "view" && !mentions_vehicle(c) &&
+      // "raise the camera 2 m and move it 1 m left", "... and drop it 0.3 m": "it" is the camera
+      // of the clause before.
+      if ((in.kind == "revise" || in.kind == "unclear") && previous == "view" && !mentions_vehicle(c) &&
           !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty()) {
         in.kind = "view";
         in.target.clear();
+      }
+      // "have a tahoe come from the right and turn left in front of us": a motion with no subject
+      // after an addition is how that vehicle moves.
+      static const char* kMotionVerbs[] = {"turn", "turns", "drive", "drives", "go", "goes", "park", "parks", "stop",
+                                           "stops", "pull", "pulls", "overtake", "overtakes", "reverse", "reverses",
+                                           "head", "heads", "merge", "merges", "speed", "slow", "come", "comes"};
+      const bool bare_motion = std::any_of(std::begin(kMotionVerbs), std::end(kMotionVerbs),
+                                           [&](const char* v) { return c.front() == v; }) &&
+                               !mentions_vehicle(c) && !text::has_any(c, {"it", "them", "camera", "view", "ego"});
+      if (bare_motion && previous == "add" && !out.empty() && out.back().kind == "add" &&
+          (in.kind == "unclear" || in.kind == "view") &&
+          text::quantities(c, {"degrees", "degree", "meters", "meter", "m"}).empty()) {
+        out.back().text += " and " + in.text;
+        continue;
       }
       previous = in.kind;
       if (in.kind == "add") {

@@ -427,6 +427,9 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
   json said = decided.ok ? decided.result["intent"] : json::object();
   // "traffic coming the other way": oncoming traffic comes toward the ego.
   if (said.value("lane", "") == "oncoming" && !said.contains("direction")) said["direction"] = "toward";
+  // "roadworks on the left side": a scene placed ahead takes a side word as that side ahead.
+  if (said.value("placement", "") == "left" || said.value("placement", "") == "right")
+    said["placement"] = said["placement"].get<std::string>() + "_front";
   const auto with_said = [&](json intent) {
     for (const char* key : {"lane", "direction", "wrong_way", "placement"})
       if (said.contains(key)) intent[key] = said[key];

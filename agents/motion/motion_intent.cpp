@@ -41,6 +41,11 @@ void MotionIntent::merge(const MotionIntent& o) {
   if (o.direction) direction = o.direction;
   if (o.wrong_way) wrong_way = o.wrong_way;
   if (o.chase) chase = o.chase;
+  // "have it chase the red car": a chase is a drive, whatever stood before.
+  if (o.chase.value_or(false) && !o.action && action == "static") {
+    action.reset();
+    if (speed == "static") speed.reset();
+  }
   if (o.overtake) overtake = o.overtake;
   if (o.lane_edge) lane_edge = o.lane_edge;
 }

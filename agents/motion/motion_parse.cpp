@@ -393,6 +393,11 @@ MotionIntent parse_motion(const std::string& instruction) {
   const auto target_side = blank_turn_targets(w);
   m.lane = find_lane(w);
   if (!m.relative) m.placement = placement_without_lane_words(w, ahead_distance);
+  // "in the right lane alongside me": level with the ego, on the lane's side.
+  if (!m.relative && !ahead_distance && (!m.placement || m.placement == "front") &&
+      has_any(w, {"alongside me", "alongside us", "beside me", "beside us", "next to me", "next to us", "level with me",
+                  "level with us", "abreast of me", "abreast of us"}))
+    m.placement = m.lane == "right" || m.lane == "parking" ? "right" : "left";
   if (has_any(w, {"close front", "close to me", "near me", "nearby", "right in front", "just ahead", "close behind",
                   "close", "near"}))
     m.distance_word = "close";

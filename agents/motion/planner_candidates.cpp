@@ -59,14 +59,14 @@ bool in_region(const Region& r, const Eigen::Vector2d& pe) {
 }
 
 bool Planner::nothing_said_about_motion() const {
-  return !m_.action && !m_.speed && !m_.speed_mps && !m_.direction && !m_.wrong_way;
+  return !m_.action && !m_.speed && !m_.speed_mps && !m_.direction && !m_.wrong_way && !m_.chase.value_or(false);
 }
 
 bool Planner::wants_parked(bool on_parking) const {
   if (!movable_) return true;
   if (m_.action == "static" || m_.speed == "static") return true;
   // A parking lane with no motion asked for: park there.
-  return on_parking && !m_.action && !m_.speed && !m_.speed_mps && !m_.direction && !m_.wrong_way;
+  return on_parking && nothing_said_about_motion();
 }
 
 bool Planner::same_way_as_ego(int lane, double s) const {

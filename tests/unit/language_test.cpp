@@ -362,3 +362,40 @@ TEST(Language, ReferencesEndWithTheirNounAndWaitingVehiclesStand) {
   EXPECT_EQ(cement[0].type.type, "truck");
   EXPECT_EQ(lexicon::find_types(text::words("a people carrier"))[0].type.type, "van");
 }
+
+TEST(Language, TopicsCausativesContinuationsAndViewVerbs) {
+  // A topic named first, then "delete it".
+  auto in = manager::decompose("The red car behind us - delete it.");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "delete");
+  EXPECT_EQ(in[0].text, "delete the red car behind us");
+  // A new vehicle made to do something, and a motion with no subject that belongs to it.
+  in = manager::decompose("Have a Chevrolet Tahoe come from the right on the cross road and turn left in front of us.");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_NE(in[0].text.find("turn left in front of us"), std::string::npos);
+  // "it" after a view clause is the camera, whatever the verb.
+  in = manager::decompose("Turn the camera to look left 20 degrees and drop it 0.3 m.");
+  ASSERT_EQ(in.size(), 2u);
+  EXPECT_EQ(in[1].kind, "view");
+  EXPECT_EQ(manager::decompose("Place the viewpoint one lane to the right.")[0].kind, "view");
+  in = manager::decompose("put a scooter in the right lane 20 m ahead and lift the camera by 80 cm");
+  ASSERT_EQ(in.size(), 2u);
+  EXPECT_EQ(in[1].kind, "view");
+  in = manager::decompose("add a white one behind it");
+  EXPECT_EQ(in[0].target, "it");
+  // People stand; they do not park.
+  const auto d = deletion::parse_deletion("remove everything parked on my right");
+  ASSERT_EQ(d.except.size(), 1u);
+  EXPECT_EQ(d.except[0].category, "human");
+}
+
+TEST(Language, BesideTheEgoAndChasesThatStartFromParked) {
+  auto m = motion::parse_motion("add a gold lexus es in the right lane alongside me");
+  EXPECT_EQ(m.placement, "right");
+  motion::MotionIntent parked = motion::parse_motion("a police car parked behind the black car");
+  ASSERT_EQ(parked.action, "static");
+  parked.merge(motion::parse_motion("chase the red car"));
+  EXPECT_FALSE(parked.action == "static");
+  EXPECT_FALSE(parked.speed == "static");
+}
