@@ -7,7 +7,8 @@ to the left; a divided road, three lanes each way, a crossroads at 50 m, parking
 T junction (v3); an undivided avenue, two lanes each way, parking both sides, staggered side
 streets left and right (v6); a road bending right with kerbside parking on the left and a side
 street to the right (v7); a wide crossroads, two lanes each way on both roads, the ego in the
-inner lane (v8).
+inner lane (v8); a narrow residential street, parked cars on both sides, a side street to the right
+(v9).
 Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no randomness).
 """
 import json
@@ -295,7 +296,30 @@ def crossroads():
           lanes, east(3.5), 8, objects)
 
 
+def narrow():
+    """A narrow two-way street (3 m lanes, one each way), parking on both sides, a side street to the
+    right at x=40; the ego drives slowly."""
+    east, west = line(-60, 0, 160, 0), line(160, 3, -60, 3)
+    lanes = [lane("east", east, 3.0), lane("west", west, 3.0),
+             lane("park_right_a", line(-60, -2.75, 33, -2.75), 2.5, "parking"),
+             lane("park_right_b", line(47, -2.75, 160, -2.75), 2.5, "parking"),
+             lane("park_left", line(160, 5.75, -60, 5.75), 2.5, "parking"),
+             lane("side_out", line(41.5, -1.5, 41.5, -80)), lane("side_in", line(38.5, -80, 38.5, -1.5))]
+    objects = [obj(1, "vehicle.car", static(8, -2.75), "grey"), obj(2, "vehicle.car", static(14, -2.75), "white"),
+               obj(3, "vehicle.car", static(26, -2.75), "blue", SIZES["suv"]),
+               obj(4, "vehicle.car", static(55, -2.75), "red"), obj(5, "vehicle.car", static(5, 5.75, math.pi), "black"),
+               obj(6, "vehicle.car", static(30, 5.75, math.pi), "yellow"),
+               obj(7, "vehicle.truck", static(62, 5.75, math.pi), "white"),
+               obj(8, "vehicle.car", track_along(west, 60, 6), "green"),
+               obj(9, "vehicle.bicycle", track_along(east, 80, 4), "orange"),
+               obj(10, "human.pedestrian.adult", track_along(line(20, 8, 20, -6), 0, 1.0)),
+               obj(11, "vehicle.car", track_along(east, 45, 5), "silver")]
+    write("blind-narrow", "hand-made layout: narrow two-way residential street, parking both sides, side street right",
+          lanes, east, 5, objects)
+
+
 if __name__ == "__main__":
+    narrow()
     crossroads()
     right_bend()
     avenue()
