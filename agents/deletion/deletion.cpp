@@ -74,8 +74,9 @@ std::optional<std::string> lane_words(const Words& p) {
                         "other direction", "the other way", "coming toward", "toward me", "toward us", "coming at me",
                         "coming at us"}))
     return "oncoming";
+  // "at the crossing" is a place; "the person crossing the road" says what the person does.
   if (text::has_any(p, {"side street", "side road", "cross street", "crossroads", "junction", "intersection",
-                        "crossing", "cross traffic", "side streets"}))
+                        "the crossing", "a crossing", "cross traffic", "side streets"}))
     return "cross";
   if (text::has_any(p, {"parking lane", "parking bay", "bus bay", "bus stop", "parking spot", "parking space"}))
     return "parking";
@@ -163,6 +164,7 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
   if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting"}))
     s.moving = false;
   else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling"})) s.moving = true;
+  s.parked = text::has_any(p, {"parked", "parking"});
   if (text::has_any(p, {"closest", "nearest", "near", "close"})) s.order = "nearest";
   else if (text::has_any(p, {"farthest", "furthest", "far", "most distant"})) s.order = "farthest";
   // "the last parked car", "the second to last truck": counted from the far end of the row.
@@ -219,6 +221,11 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
     return (a->pe - anchor.pe).norm() < (b->pe - anchor.pe).norm();
   });
   return out;
+}
+
+bool scene_has_parking(const scene::Scene& scene) {
+  const auto& lanes = scene.lanes.lanes();
+  return std::any_of(lanes.begin(), lanes.end(), [](const scene::Lane& l) { return l.type == "parking"; });
 }
 
 bool matches(const Selector& s, const Candidate& c) {
@@ -329,6 +336,7 @@ static nlohmann::json selector_json(const Selector& s) {
   if (s.anchor_only) j["anchor_only"] = true;
   if (s.approaching) j["approaching"] = *s.approaching;
   if (s.moving) j["moving"] = *s.moving;
+  if (s.parked) j["parked"] = true;
   if (s.order) {
     j["order"] = *s.order;
     j["nth"] = s.nth;
@@ -350,6 +358,7 @@ static Selector selector_from(const nlohmann::json& j) {
   s.anchor_only = j.value("anchor_only", false);
   if (j.contains("approaching")) s.approaching = j["approaching"].get<bool>();
   if (j.contains("moving")) s.moving = j["moving"].get<bool>();
+  s.parked = j.value("parked", false);
   if (j.contains("order")) s.order = j["order"].get<std::string>();
   s.nth = j.value("nth", 1);
   return s;
@@ -401,6 +410,14 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     for (const auto& c : cands)
       if (matches(t, c)) m.push_back(&c);
     if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
+    // "parked" where the map has a kerb to park at: not a car waiting in a lane (if any is left).
+    if (t.parked && scene_has_parking(scene)) {
+      std::vector<const Candidate*> kerbside;
+      for (const auto* c : m)
+        if (!(c->lane.ego || c->lane.left || c->lane.middle || c->lane.right || c->lane.oncoming || c->lane.cross))
+          kerbside.push_back(c);
+      if (!kerbside.empty()) m = kerbside;
+    }
     // "the bike" with no bicycle about: a motorbike is a bike too.
     if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) {
       Selector motorbike = t;

@@ -21,6 +21,7 @@ struct Selector {
   std::optional<std::string> of_previous;  // behind, front, beside, near: "... and the truck behind it"
   bool anchor_only = false;             // "closest to the police car": it places the next selector, stays
   std::optional<bool> moving;
+  bool parked = false;                  // "parked": standing at the kerb, not waiting in a lane
   std::optional<bool> approaching;      // moving toward the ego ("the car coming toward us")
   std::string quantity = "one";         // one, all, n
   int n = 1;

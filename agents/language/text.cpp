@@ -216,8 +216,15 @@ std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initial
       bool match = j + uw.size() <= w.size();
       for (size_t k = 0; k < uw.size() && match; ++k) match = w[j + k] == uw[k];
       if (match) {
-        out.push_back({*v, i, j + uw.size()});
-        i = j + uw.size() - 1;
+        size_t end = j + uw.size();
+        double value = *v;
+        // "a metre and a half": the half comes after the unit.
+        if (end + 3 <= w.size() && w[end] == "and" && (w[end + 1] == "a" || w[end + 1] == "one") && w[end + 2] == "half") {
+          value += 0.5;
+          end += 3;
+        }
+        out.push_back({value, i, end});
+        i = end - 1;
         break;
       }
     }

@@ -179,6 +179,22 @@ bool indefinite_vehicle_subject(const Words& c) {
   return noun >= 1 && noun <= 4 && noun < c.size();  // "2 m forward": the number itself is no model name
 }
 
+// "add another behind the cab": the words right after "another" (up to a place word) name no
+// vehicle, so it is another of the last one ("another red one" too, recoloured); "add another
+// cab behind it" names its own.
+bool names_its_own_kind(const Words& c) {
+  size_t at = text::find_any(c, {"another", "one more", "same", "similar"});
+  if (at == std::string::npos) return mentions_vehicle(Words(c.begin() + 1, c.end()));
+  size_t end = at + 1;
+  static const char* kPlaceWords[] = {"behind", "in", "on", "at", "ahead", "next", "beside", "to", "near", "parked",
+                                      "driving", "following", "after", "before", "just", "right", "left", "coming"};
+  while (end < c.size() && std::none_of(std::begin(kPlaceWords), std::end(kPlaceWords),
+                                        [&](const char* p) { return c[end] == p; }))
+    ++end;
+  const Words own(c.begin() + long(at) + 1, c.begin() + long(end));
+  return mentions_vehicle(own);
+}
+
 bool starts_with(const Words& c, const std::vector<std::string>& verbs) {
   return std::find(verbs.begin(), verbs.end(), c.front()) != verbs.end();
 }
@@ -258,9 +274,7 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
   }
   if (vehicle || has_any(c, {"another", "one more", "one"})) {
     in.kind = "add";
-    if (has_any(c, {"another", "one more", "another one", "same", "similar"}) &&
-        !mentions_vehicle(Words(c.begin() + 1, c.end())))
-      in.target = "it";
+    if (has_any(c, {"another", "one more", "another one", "same", "similar"}) && !names_its_own_kind(c)) in.target = "it";
     return true;
   }
   return false;

@@ -399,3 +399,14 @@ TEST(Language, BesideTheEgoAndChasesThatStartFromParked) {
   EXPECT_FALSE(parked.action == "static");
   EXPECT_FALSE(parked.speed == "static");
 }
+
+TEST(Language, HalvesAfterUnitsCopiesAndParkedMeansAtTheKerb) {
+  const auto q = text::quantities(text::words("raise the view by a metre and a half"), {"meters", "meter", "m"});
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_DOUBLE_EQ(q[0].value, 1.5);
+  EXPECT_EQ(manager::decompose("Add another behind the cab.")[0].target, "it");  // another of the last one
+  EXPECT_EQ(manager::decompose("Add another cab behind it.")[0].target, "");     // a cab of its own
+  // "crossing the road" is what the person does, not a lane.
+  EXPECT_FALSE(deletion::parse_deletion("get rid of the person crossing the road").targets[0].lane);
+  EXPECT_TRUE(deletion::parse_deletion("delete the two cars parked nearest the cone").targets[1].parked);
+}
