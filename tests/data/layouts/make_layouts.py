@@ -8,7 +8,7 @@ T junction (v3); an undivided avenue, two lanes each way, parking both sides, st
 streets left and right (v6); a road bending right with kerbside parking on the left and a side
 street to the right (v7); a wide crossroads, two lanes each way on both roads, the ego in the
 inner lane (v8); a narrow residential street, parked cars on both sides, a side street to the right
-(v9).
+(v9); a dual carriageway with an on-ramp merging from the right (v10).
 Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no randomness).
 """
 import json
@@ -318,7 +318,28 @@ def narrow():
           lanes, east, 5, objects)
 
 
+def on_ramp():
+    """Dual carriageway, two lanes each way behind a 4 m median, an on-ramp joining from the right
+    (an acceleration lane from x=20 to x=80); the ego in the right lane."""
+    east = lambda y: line(-60, y, 240, y)
+    west = lambda y: line(240, y, -60, y)
+    ramp = [[-60.0, -20.0, 0.0], [-20.0, -14.0, 0.0], [0.0, -9.0, 0.0], [20.0, -3.5, 0.0]] + line(25, -3.5, 80, -3.5)
+    lanes = [lane("east_right", east(0)), lane("east_left", east(3.5)), lane("west_left", west(11)),
+             lane("west_right", west(14.5)), lane("on_ramp", ramp)]
+    objects = [obj(1, "vehicle.truck", track_along(east(0), 100, 11), "blue"),
+               obj(2, "vehicle.car", track_along(east(3.5), 70, 16), "red"),
+               obj(3, "vehicle.car", track_along(ramp, 45, 12), "white"),
+               obj(4, "vehicle.car", track_along(west(11), 150, 18), "grey"),
+               obj(5, "vehicle.bus.rigid", track_along(west(14.5), 120, 12), "white"),
+               obj(6, "vehicle.car", track_along(east(0), 35, 15), "black", SIZES["suv"]),
+               obj(7, "vehicle.motorcycle", track_along(east(3.5), 20, 20), "yellow"),
+               obj(8, "vehicle.car", static(60, -6.0), "silver")]
+    write("blind-onramp", "hand-made layout: dual carriageway, two lanes each way, an on-ramp merging from the right",
+          lanes, east(0), 14, objects)
+
+
 if __name__ == "__main__":
+    on_ramp()
     narrow()
     crossroads()
     right_bend()
