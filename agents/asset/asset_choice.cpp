@@ -54,6 +54,7 @@ AssetRequest parse_asset(const std::string& instruction) {
   const auto brands = lexicon::find_brands(w);
   if (!brands.empty()) {
     r.brand = brands.front().brand;
+    if (!brands.front().name.empty()) r.brand_name = brands.front().name;
     if (!r.type || *r.type == "car") {
       if (brands.front().type != "car" || !r.type) r.type = brands.front().type;
     }
@@ -88,6 +89,7 @@ nlohmann::json to_json(const AssetRequest& r) {
   nlohmann::json j = nlohmann::json::object();
   if (r.type) j["type"] = *r.type;
   if (r.brand) j["brand"] = *r.brand;
+  if (r.brand_name) j["brand_name"] = *r.brand_name;
   if (r.unknown_brand) j["unknown_brand"] = *r.unknown_brand;
   if (r.color) j["color"] = *r.color;
   if (r.color_rgb) j["color_rgb"] = *r.color_rgb;
@@ -100,6 +102,7 @@ AssetRequest asset_request_from_json(const nlohmann::json& j) {
   if (!j.is_object()) return r;
   if (j.contains("type")) r.type = j["type"].get<std::string>();
   if (j.contains("brand")) r.brand = j["brand"].get<std::string>();
+  if (j.contains("brand_name")) r.brand_name = j["brand_name"].get<std::string>();
   if (j.contains("unknown_brand")) r.unknown_brand = j["unknown_brand"].get<std::string>();
   if (j.contains("color")) r.color = j["color"].get<std::string>();
   if (j.contains("color_rgb")) r.color_rgb = j["color_rgb"].get<std::array<int, 3>>();
@@ -135,6 +138,9 @@ AssetChoice choose_asset(const AssetRequest& r, const std::optional<AssetChoice>
     out.size_lwh = entry->size_lwh;
     if (new_vehicle) out.color_rgb = entry->color_rgb;
   }
+  // "a Vauxhall Corsa" is an Opel mesh, labelled with the name the user gave too.
+  if (r.brand_name && std::find(out.brand_words.begin(), out.brand_words.end(), *r.brand_name) == out.brand_words.end())
+    out.brand_words.push_back(*r.brand_name);
   out.type = type;
   if (const auto* vt = lexicon::vehicle_type(type)) out.category = vt->category;
   if (r.color_rgb) out.color_rgb = *r.color_rgb;

@@ -13,6 +13,7 @@ namespace chatsim::agents::asset {
 struct AssetRequest {
   std::optional<std::string> type;     // car, suv, truck, ...
   std::optional<std::string> brand;    // porsche
+  std::optional<std::string> brand_name;  // the make as said when another of its names ("vauxhall" for opel)
   std::optional<std::string> unknown_brand;  // a capitalised word we do not know ("Zorbex")
   std::optional<std::string> color;    // as said: "dark blue"
   std::optional<std::array<int, 3>> color_rgb;

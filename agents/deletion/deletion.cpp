@@ -80,6 +80,9 @@ std::optional<std::string> lane_words(const Words& p) {
     return "cross";
   if (text::has_any(p, {"parking lane", "parking bay", "bus bay", "bus stop", "parking spot", "parking space"}))
     return "parking";
+  if (text::has_any(p, {"slip road", "on ramp", "ramp", "merging lane", "acceleration lane", "entry lane", "joining"}))
+    return "ramp";
+  if (text::has_any(p, {"hard shoulder", "shoulder", "verge", "emergency lane", "roadside"})) return "shoulder";
   return std::nullopt;
 }
 
@@ -161,7 +164,8 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
   else if (text::has_any(p, {"behind", "back", "rear"})) s.region = "back";
   else if (!side_is_lane && text::has_any(p, {"left"})) s.region = "left";
   else if (!side_is_lane && text::has_any(p, {"right"})) s.region = "right";
-  if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting"}))
+  if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting",
+                        "broken down", "stalled", "abandoned", "crashed", "disabled"}))
     s.moving = false;
   else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling"})) s.moving = true;
   s.parked = text::has_any(p, {"parked", "parking"});

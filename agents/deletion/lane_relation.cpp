@@ -23,6 +23,24 @@ int lane_at(const scene::LaneMap& lanes, const Eigen::Vector2d& p, bool driving_
   return best;
 }
 
+// A lane whose legal travel ends beside another driving lane of the same way (2-5 m across),
+// not at a crossing: an on-ramp or a merging lane.
+bool merges(const scene::LaneMap& lanes, int index) {
+  const auto& l = lanes.lanes()[size_t(index)];
+  if (l.type != "driving") return false;
+  const double end_s = l.direction == scene::TrafficDirection::Backward ? 0.0 : l.length();
+  const Eigen::Vector2d end = lanes.point_at(index, end_s);
+  const double yaw = lanes.travel_yaw_at(index, end_s);
+  for (size_t i = 0; i < lanes.lanes().size(); ++i) {
+    if (int(i) == index || lanes.lanes()[i].type != "driving") continue;
+    const auto pos = lanes.project(int(i), end);
+    if (pos.s <= 1 || pos.s >= lanes.lanes()[i].length() - 1) continue;
+    if (std::abs(pos.lateral) < 2 || std::abs(pos.lateral) > 5) continue;
+    if (std::abs(wrap(lanes.travel_yaw_at(int(i), pos.s) - yaw)) < kPi / 8) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) {
@@ -30,7 +48,12 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   const auto& lanes = scene.lanes;
   if (lanes.empty() || scene.frames.empty()) return r;
   const int own = lane_at(lanes, p, false);
-  if (own < 0) return r;
+  if (own < 0) {
+    // Off every lane but close beside a driving one: the shoulder.
+    for (const auto& pos : lanes.containing(p, 3.0))
+      if (lanes.lanes()[size_t(pos.lane)].type == "driving") r.shoulder = true;
+    return r;
+  }
   const auto& ego_pose = scene.frames.front().ego_to_world;
   const Eigen::Vector2d ego = ego_pose.translation().head<2>();
   const Eigen::Vector3d fwd = ego_pose.linear().col(0);
@@ -76,6 +99,10 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   }
   r.ego = own == ego_lane;
   r.near_side = true;
+  if (merges(lanes, own)) {  // not one of the road's own lanes
+    r.ramp = true;
+    return r;
+  }
   // Same-direction driving lanes beside the object's, by which side of it they lie.
   int to_left = 0, to_right = 0;
   for (size_t i = 0; i < lanes.lanes().size(); ++i) {
@@ -100,6 +127,8 @@ bool has_lane(const LaneRelation& r, const std::string& lane) {
   if (lane == "oncoming") return r.oncoming;
   if (lane == "cross") return r.cross;
   if (lane == "parking") return r.parking;
+  if (lane == "ramp") return r.ramp;
+  if (lane == "shoulder") return r.shoulder;
   if (lane == "near") return r.near_side;
   if (lane == "far") return r.far_side;
   return false;

@@ -18,6 +18,8 @@ struct LaneRelation {
   bool oncoming = false;  // a lane travelled against the ego's direction
   bool cross = false;     // a lane across the ego's (side street, cross street)
   bool parking = false;   // a parking lane or bay
+  bool ramp = false;      // a lane that ends by merging into one beside it (an on-ramp, slip road)
+  bool shoulder = false;  // on no lane, beside a driving one (the hard shoulder, the verge)
   // Which half of the road: the ego's (its direction's lanes and the kerb beside them) or the far
   // one (the oncoming lanes and beyond). Neither on a side street or a one-way street's kerbs.
   bool near_side = false;
@@ -28,7 +30,7 @@ struct LaneRelation {
 LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p);
 
 // Whether a relation has the lane word a selector asks for (ego, left, middle, right, oncoming,
-// cross, parking), or the road side (near, far).
+// cross, parking, ramp, shoulder), or the road side (near, far).
 bool has_lane(const LaneRelation& r, const std::string& lane);
 
 }  // namespace chatsim::agents::deletion

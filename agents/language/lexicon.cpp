@@ -372,6 +372,12 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
       bool free = true;
       for (size_t k = 0; k < nw.size(); ++k) free = free && !used[at + k];
       if (!free) continue;
+      // "the bus bay", "a bus stop", "the car park", "a taxi rank": a place named after a vehicle.
+      static const char* kPlaces[] = {"bay", "bays", "stop", "stops", "lane", "lanes", "station", "shelter", "park",
+                                      "rank", "depot", "garage", "wash", "dealership"};
+      const size_t after = at + nw.size();
+      if (after < w.size() && std::any_of(std::begin(kPlaces), std::end(kPlaces), [&](const char* p) { return w[after] == p; }))
+        continue;
       for (size_t k = 0; k < nw.size(); ++k) used[at + k] = true;
       out.push_back({types().at(n.type), at, at + nw.size(), n.plural});
     }
@@ -398,7 +404,9 @@ std::vector<BrandMention> find_brands(const std::vector<std::string>& w) {
       // A make that is also an ordinary word ("man", "seat") counts only before a model or a noun.
       if (ambiguous && !model && !noun_follows) continue;
       if (make.brand == "mini" && at + n < w.size() && (w[at + n] == "van" || w[at + n] == "bus")) continue;
-      BrandMention m{make.brand, model ? model->second : make.type, at, at + n + (model ? model->first : 0)};
+      std::string said = text::join(*matched);
+      if (said == make.brand || text::join(text::words(make.brand)) == said) said.clear();
+      BrandMention m{make.brand, said, model ? model->second : make.type, at, at + n + (model ? model->first : 0)};
       out.push_back(m);
       at = m.end - 1;
       break;

@@ -38,6 +38,7 @@ const VehicleType* vehicle_type(const std::string& type);
 
 struct BrandMention {
   std::string brand;     // porsche
+  std::string name;      // as said when that is another name of the make ("cupra", "vauxhall"), else ""
   std::string type;      // its usual type: car, suv, truck
   size_t begin = 0, end = 0;
 };

@@ -57,7 +57,8 @@ bool classify_whole(const Words& c, Instruction& in) {
     in.target = in.text;
     return true;
   }
-  if (has_any(c, {"traffic jam", "congestion", "gridlock", "stuck in traffic", "bumper to bumper", "jammed", "queue of",
+  if (has_any(c, {"traffic jam", "jam", "jams", "standstill", "stop and go", "congested", "congestion", "gridlock",
+                  "stuck in traffic", "bumper to bumper", "jammed", "queue of",
                   "tailback", "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
     in.kind = "traffic_jam";
     return true;
@@ -184,7 +185,10 @@ bool indefinite_vehicle_subject(const Words& c) {
 // cab behind it" names its own.
 bool names_its_own_kind(const Words& c) {
   size_t at = text::find_any(c, {"another", "one more", "same", "similar"});
-  if (at == std::string::npos) return mentions_vehicle(Words(c.begin() + 1, c.end()));
+  if (at == std::string::npos) {  // "add a red one in front of the truck": the words before "one"
+    const auto one = std::find(c.begin(), c.end(), "one");
+    return mentions_vehicle(Words(c.begin() + 1, one));
+  }
   size_t end = at + 1;
   static const char* kPlaceWords[] = {"behind", "in", "on", "at", "ahead", "next", "beside", "to", "near", "parked",
                                       "driving", "following", "after", "before", "just", "right", "left", "coming"};
@@ -257,7 +261,8 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
                                return lexicon::is_color_word(x) || x == "dark" || x == "light" || x == "bright" ||
                                       x == "new" || x == "similar" || x == "bigger" || x == "smaller";
                              });
-  if ((first == "another" || (c.size() > 1 && first == "one" && c[1] == "more") || described_one) && !vehicle) {
+  if ((first == "another" || (c.size() > 1 && first == "one" && c[1] == "more") || described_one) &&
+      !names_its_own_kind(c)) {
     in.kind = "add";
     in.target = "it";
     if (!add_verb) in.text = "add " + in.text;

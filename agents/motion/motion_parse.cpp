@@ -168,9 +168,11 @@ std::optional<std::string> find_lane(const Words& w_in) {
 // "changing into the right lane", "moves over to the left lane": a lane change whose target is
 // named. The lane words then say where it goes, not where it starts, so they are blanked.
 std::optional<std::string> lane_change_to(Words& w) {
-  static const char* verbs[] = {"change", "changes", "changing", "switch", "switches", "switching", "moves",
-                                "moving", "pull", "pulls", "pulling", "merge", "merges", "merging", "swerve",
-                                "swerves", "swerving", "cut", "cuts", "cutting"};
+  // Not "move it to the left lane" (the user moves it there) but "it moves / drifts into my lane".
+  static const char* verbs[] = {"change",  "changes", "changing", "switch", "switches", "switching", "moves",
+                                "moving",  "goes",    "drifts",   "drift",  "drifting", "pull",      "pulls",
+                                "pulling", "merge",   "merges",   "merging", "swerve",  "swerves",   "swerving",
+                                "cut",     "cuts",    "cutting"};
   static const char* links[] = {"into", "to", "onto", "over", "the", "lanes", "lane", "across"};
   for (size_t i = 0; i < w.size(); ++i) {
     if (std::find(std::begin(verbs), std::end(verbs), w[i]) == std::end(verbs)) continue;

@@ -58,7 +58,14 @@ void add_translations(const Words& w_in, ViewChange& v) {
         w[i] = "_";
         break;
       }
-  const Words wu = with_units(w);
+  Words wu = with_units(w);
+  // "pan right 20 degrees and go 10 m ahead": the side word next to an angle is the turn's.
+  for (const auto& q : text::quantities(wu, {"degrees", "degree", "deg", "°"})) {
+    for (size_t i = q.begin; i-- > 0 && q.begin - i <= 2;)
+      if (wu[i] == "left" || wu[i] == "right") wu[i] = "_";
+    for (size_t i = q.end; i < std::min(wu.size(), q.end + 3); ++i)
+      if (wu[i] == "left" || wu[i] == "right") wu[i] = "_";
+  }
   const auto distances =
       text::quantities(wu, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm", "lanes", "lane"});
   const bool lead = directions_lead(wu, distances);

@@ -410,3 +410,21 @@ TEST(Language, HalvesAfterUnitsCopiesAndParkedMeansAtTheKerb) {
   EXPECT_FALSE(deletion::parse_deletion("get rid of the person crossing the road").targets[0].lane);
   EXPECT_TRUE(deletion::parse_deletion("delete the two cars parked nearest the cone").targets[1].parked);
 }
+
+TEST(Language, PlacesNamedAfterVehiclesSisterBrandsRampsAndAngles) {
+  // "the bus bay" is a place; "make it park in the bus bay" does not make it a bus.
+  EXPECT_TRUE(lexicon::find_types(text::words("park in the bus bay")).empty());
+  EXPECT_EQ(asset::parse_asset("make it park in the bus bay").type, std::nullopt);
+  // A make said by another of its names keeps that name as a label.
+  const auto corsa = asset::choose_asset(asset::parse_asset("a dark blue vauxhall corsa"));
+  EXPECT_NE(std::find(corsa.brand_words.begin(), corsa.brand_words.end(), "vauxhall"), corsa.brand_words.end());
+  EXPECT_EQ(deletion::parse_deletion("remove the car joining from the slip road").targets[0].lane, "ramp");
+  EXPECT_EQ(deletion::parse_deletion("delete the broken-down car on the hard shoulder").targets[0].lane, "shoulder");
+  EXPECT_FALSE(*deletion::parse_deletion("delete the broken-down car").targets[0].moving);
+  // The side word of an angle is the turn's, not the next distance's.
+  const auto v = view::parse_view("pan right 20 degrees and go 10 m ahead");
+  EXPECT_EQ(*v.translation_m, (std::array<double, 3>{10, 0, 0}));
+  EXPECT_DOUBLE_EQ(*v.yaw_deg, -20);
+  EXPECT_EQ(manager::decompose("create a jam on the on ramp")[0].kind, "traffic_jam");
+  EXPECT_EQ(manager::decompose("now add a red one in front of the truck")[0].target, "it");
+}
