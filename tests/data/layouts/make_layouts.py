@@ -8,7 +8,8 @@ T junction (v3); an undivided avenue, two lanes each way, parking both sides, st
 streets left and right (v6); a road bending right with kerbside parking on the left and a side
 street to the right (v7); a wide crossroads, two lanes each way on both roads, the ego in the
 inner lane (v8); a narrow residential street, parked cars on both sides, a side street to the right
-(v9); a dual carriageway with an on-ramp merging from the right (v10).
+(v9); a dual carriageway with an on-ramp merging from the right (v10); a left-hand-traffic road
+(as in Singapore or the UK), parking and a side street on the left (v11).
 Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no randomness).
 """
 import json
@@ -338,7 +339,29 @@ def on_ramp():
           lanes, east(0), 14, objects)
 
 
+def left_hand():
+    """Left-hand traffic: the ego drives east in the left lane (y=0), the oncoming lane on its right
+    (y=-3.5); parking on the left kerb to x=40, a bus stop bay on the left after it, a side street to
+    the left at x=70."""
+    east, west = line(-60, 0, 200, 0), line(200, -3.5, -60, -3.5)
+    lanes = [lane("eastbound", east), lane("westbound", west),
+             lane("parking_left", line(-60, 3, 40, 3), 2.5, "parking"),
+             lane("bus_stop", line(45, 3.25, 62, 3.25), 3.0, "parking"),
+             lane("side_in", line(71.75, 80, 71.75, 1.75)), lane("side_out", line(68.25, 1.75, 68.25, 80))]
+    objects = [obj(1, "vehicle.car", static(10, 3), "white"), obj(2, "vehicle.car", static(24, 3), "black"),
+               obj(3, "vehicle.bus.rigid", static(53, 3.25), "red"),
+               obj(4, "vehicle.car", track_along(east, 95, 8), "silver"),
+               obj(5, "vehicle.car", track_along(west, 110, 10), "blue"),
+               obj(6, "vehicle.truck", track_along(west, 40, 7), "yellow"),
+               obj(7, "vehicle.motorcycle", track_along(east, 40, 10), "red"),
+               obj(8, "vehicle.car", static(71.75, 20, -math.pi / 2), "green"),
+               obj(9, "human.pedestrian.adult", static(50, 6))]
+    write("blind-lefthand", "hand-made layout: left-hand traffic, parking and a bus stop on the left, side street left",
+          lanes, east, 7, objects)
+
+
 if __name__ == "__main__":
+    left_hand()
     on_ramp()
     narrow()
     crossroads()
