@@ -69,6 +69,13 @@ AssetRequest parse_asset(const std::string& instruction) {
   if (!types.empty()) {
     // "some cones", "cars": more than one, how many unsaid.
     if (types.front().plural && !text::has_any(w, {"all", "every", "each"})) r.count = 3;
+    // "a row of parked cars", "a line of vans": several, not the "a" of the row.
+    const bool group = text::has_any(w, {"row of", "rows of", "line of", "string of", "column of", "convoy of",
+                                         "bunch of", "lot of", "lots of", "number of", "fleet of", "queue of"});
+    if (group && types.front().plural) {
+      r.count = 4;
+      return r;
+    }
     const size_t at = types.front().begin;
     // "two traffic cones", "500 cars", "a couple of vans": the count word right before the noun phrase.
     for (size_t i = at; i-- > 0 && at - i <= 4;) {

@@ -194,6 +194,13 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
       }
     }
   if (s.order && s.quantity == "all" && !text::has_any(p, {"all", "every", "each"})) s.quantity = "one";
+  // "both cars", "both of the parked cars": two of them, the nearest two (not "on both sides").
+  const size_t both = text::find_phrase(p, "both");
+  if (both != std::string::npos && s.quantity == "all" && !types.empty() && types.front().plural &&
+      both < types.front().begin && types.front().begin - both <= 4) {
+    s.quantity = "n";
+    s.n = 2;
+  }
   return s;
 }
 
@@ -434,12 +441,20 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
                              (removed.empty() ? "" : " (or it was already removed)"));
       continue;
     }
-    // "the white car" means a passenger car when one matches, not the white bus.
+    // "the white car", "both cars" mean passenger cars when any match, not the white bus ("all cars"
+    // is every vehicle: the dev cases' reading).
     if (t.quantity != "all" && t.category == "vehicle" && t.noun.find("car") != std::string::npos) {
       std::vector<const Candidate*> cars;
       for (const auto* c : m)
         if (c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency")) cars.push_back(c);
       if (!cars.empty()) m = cars;
+    }
+    // "the white SUV": of the cars that match, the tall ones.
+    if (t.noun == "suv" || t.noun == "suvs" || t.noun == "jeep" || t.noun == "crossover") {
+      std::vector<const Candidate*> tall;
+      for (const auto* c : m)
+        if (c->object->size_lwh.z() >= 1.65) tall.push_back(c);
+      if (!tall.empty()) m = tall;
     }
     if (t.order == "farthest") std::reverse(m.begin(), m.end());
     // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.

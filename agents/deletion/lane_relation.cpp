@@ -41,6 +41,32 @@ bool merges(const scene::LaneMap& lanes, int index) {
   return false;
 }
 
+// The half of the road a place off the driving lanes belongs to: that of the nearest driving lane
+// along it, when the road has lanes both ways.
+template <typename SameWay>
+void road_side_by_nearest_lane(const scene::LaneMap& lanes, const Eigen::Vector2d& p, const SameWay& same_way,
+                               LaneRelation& r) {
+  int nearest = -1;
+  double best = 8.0;
+  bool road_has_oncoming = false;
+  for (size_t i = 0; i < lanes.lanes().size(); ++i) {
+    if (lanes.lanes()[i].type != "driving") continue;
+    const auto pos = lanes.project(int(i), p);
+    if (pos.s <= 0.5 || pos.s >= lanes.lanes()[i].length() - 0.5 || std::abs(pos.lateral) > 20) continue;
+    const double d = same_way(int(i), pos.s);
+    if (d > kPi / 4 && d < 3 * kPi / 4) continue;  // a side street
+    road_has_oncoming = road_has_oncoming || d >= 3 * kPi / 4;
+    if (std::abs(pos.lateral) < best) {
+      best = std::abs(pos.lateral);
+      nearest = int(i);
+    }
+  }
+  if (nearest < 0 || !road_has_oncoming) return;
+  const bool far = same_way(nearest, lanes.project(nearest, p).s) >= 3 * kPi / 4;
+  r.far_side = far;
+  r.near_side = !far;
+}
+
 }  // namespace
 
 LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) {
@@ -48,12 +74,6 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   const auto& lanes = scene.lanes;
   if (lanes.empty() || scene.frames.empty()) return r;
   const int own = lane_at(lanes, p, false);
-  if (own < 0) {
-    // Off every lane but close beside a driving one: the shoulder.
-    for (const auto& pos : lanes.containing(p, 3.0))
-      if (lanes.lanes()[size_t(pos.lane)].type == "driving") r.shoulder = true;
-    return r;
-  }
   const auto& ego_pose = scene.frames.front().ego_to_world;
   const Eigen::Vector2d ego = ego_pose.translation().head<2>();
   const Eigen::Vector3d fwd = ego_pose.linear().col(0);
@@ -62,29 +82,16 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   double ref_yaw = std::atan2(fwd.y(), fwd.x());
   if (ego_lane >= 0) ref_yaw = lanes.travel_yaw_at(ego_lane, lanes.project(ego_lane, p).s);
   const auto same_way = [&](int lane, double s) { return std::abs(wrap(lanes.travel_yaw_at(lane, s) - ref_yaw)); };
+  if (own < 0) {
+    // Off every lane but close beside a driving one: the shoulder (or a pavement), on its side.
+    for (const auto& pos : lanes.containing(p, 3.0))
+      if (lanes.lanes()[size_t(pos.lane)].type == "driving") r.shoulder = true;
+    road_side_by_nearest_lane(lanes, p, same_way, r);
+    return r;
+  }
   if (lanes.lanes()[size_t(own)].type == "parking") {
     r.parking = true;
-    // Its half of the road is that of the nearest driving lane along it, when the road has both.
-    int nearest = -1;
-    double best = 8.0;
-    bool road_has_oncoming = false;
-    for (size_t i = 0; i < lanes.lanes().size(); ++i) {
-      if (lanes.lanes()[i].type != "driving") continue;
-      const auto pos = lanes.project(int(i), p);
-      if (pos.s <= 0.5 || pos.s >= lanes.lanes()[i].length() - 0.5 || std::abs(pos.lateral) > 20) continue;
-      const double d = same_way(int(i), pos.s);
-      if (d > kPi / 4 && d < 3 * kPi / 4) continue;  // a side street
-      road_has_oncoming = road_has_oncoming || d >= 3 * kPi / 4;
-      if (std::abs(pos.lateral) < best) {
-        best = std::abs(pos.lateral);
-        nearest = int(i);
-      }
-    }
-    if (nearest >= 0 && road_has_oncoming) {
-      const bool far = same_way(nearest, lanes.project(nearest, p).s) >= 3 * kPi / 4;
-      r.far_side = far;
-      r.near_side = !far;
-    }
+    road_side_by_nearest_lane(lanes, p, same_way, r);
     return r;
   }
   const double d = same_way(own, lanes.project(own, p).s);

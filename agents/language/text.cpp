@@ -14,7 +14,8 @@ const std::map<std::string, std::string>& spellings() {
       {"metres", "meters"}, {"metre", "meter"}, {"kilometres", "kilometers"}, {"kilometre", "kilometer"},
       {"centimetres", "centimeters"}, {"centimetre", "centimeter"}, {"colour", "color"}, {"grey", "gray"},
       {"towards", "toward"}, {"kph", "km/h"}, {"kmh", "km/h"}, {"kmph", "km/h"}, {"mins", "minutes"},
-      {"centre", "center"}, {"recolour", "recolor"}, {"lorry", "truck"}, {"lorries", "trucks"}, {"tyre", "tire"}};
+      {"centre", "center"}, {"recolour", "recolor"}, {"kerb", "curb"}, {"kerbs", "curbs"}, {"lorry", "truck"},
+      {"lorries", "trucks"}, {"tyre", "tire"}};
   return m;
 }
 

@@ -238,8 +238,12 @@ std::vector<Instruction> decompose(const std::string& command) {
     if (const size_t colon = sentence.find(':'); colon != std::string::npos) {
       auto title = decompose(sentence.substr(0, colon));
       auto body = decompose(sentence.substr(colon + 1));
+      // "Make it look like school's out: ..." describes the scene the detail builds.
+      const bool scene_title = text::has_any(text::words(sentence.substr(0, colon)),
+                                             {"look like", "looks like", "as if", "as though", "feel like"});
       const auto unclear = [](const Instruction& i) { return i.kind == "unclear"; };
-      if (std::all_of(title.begin(), title.end(), unclear) && !std::all_of(body.begin(), body.end(), unclear))
+      if ((scene_title || std::all_of(title.begin(), title.end(), unclear)) &&
+          !std::all_of(body.begin(), body.end(), unclear))
         title.clear();
       out.insert(out.end(), title.begin(), title.end());
       out.insert(out.end(), body.begin(), body.end());

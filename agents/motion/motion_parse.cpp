@@ -195,8 +195,9 @@ std::optional<std::string> lane_change_to(Words& w) {
 std::optional<std::string> find_action(const Words& w) {
   // "waiting at the junction to turn right", "about to pull out": what it will do after the
   // clip; now it stands (unless it is said to go on, "waits, then turns").
-  if ((has_any(w, {"waiting", "waits", "about to", "ready to", "preparing to"})) && !has_any(w, {"then", "before"}))
-    return "static";
+  const bool about_to_start = has_any(w, {"about to", "ready to", "preparing to"}) &&
+                              has_any(w, {"pull", "leave", "set off", "turn", "go", "move", "drive", "depart", "start"});
+  if ((has_any(w, {"waiting", "waits"}) || about_to_start) && !has_any(w, {"then", "before"})) return "static";
   const bool lane_change = has_any(w, {"change lanes", "changes lanes", "changing lanes", "change lane",
                                        "changes lane", "changing lane", "lane change", "switch lanes",
                                        "switches lanes", "switching lanes", "merge", "merges", "merging"});
@@ -417,8 +418,9 @@ MotionIntent parse_motion(const std::string& instruction) {
   find_speed(w, m);
   find_direction(w, m);
   // Moving words after "parked": it leaves (a revision "pull out and drive away" ends the parking).
-  if (m.action == "static" && has_any(w, {"pull out", "pulls out", "pulling out", "drive off", "drives off",
-                                          "drive away", "drives away", "driving away", "leave", "leaves", "set off"}))
+  if (m.action == "static" && !has_any(w, {"about to", "ready to", "preparing to", "waiting to"}) &&
+      has_any(w, {"pull out", "pulls out", "pulling out", "drive off", "drives off", "drive away", "drives away",
+                  "driving away", "leave", "leaves", "set off"}))
     m.action = "straight";
   if (m.action == "static") m.speed = "static";
   if (m.speed_mps && (*m.speed_mps < 0 || *m.speed_mps > kMaxSpeedMps)) {

@@ -51,6 +51,19 @@ Words with_units(Words w) {
 
 void add_translations(const Words& w_in, ViewChange& v) {
   Words w = w_in;
+  // "2 m closer to the kerb" (right-hand traffic: the kerb is on the right), "toward the middle
+  // of the road" (left).
+  for (const auto& [phrase, side] : {std::pair{"closer to the curb", "right"}, std::pair{"toward the curb", "right"},
+                                     std::pair{"nearer the curb", "right"}, std::pair{"closer to the sidewalk", "right"},
+                                     std::pair{"toward the sidewalk", "right"}, std::pair{"toward the pavement", "right"},
+                                     std::pair{"toward the middle of the road", "left"},
+                                     std::pair{"toward the center of the road", "left"},
+                                     std::pair{"toward the center line", "left"}})
+    for (size_t at = text::find_phrase(w, phrase); at != std::string::npos; at = text::find_phrase(w, phrase)) {
+      const size_t n = text::words(phrase).size();
+      w.erase(w.begin() + long(at), w.begin() + long(at + n));
+      w.insert(w.begin() + long(at), side);
+    }
   // "back the camera up 5 m", "back up": the verb is the direction, "up" only its particle.
   if (!w.empty() && w[0] == "back")
     for (size_t i = 1; i < std::min<size_t>(w.size(), 4); ++i)

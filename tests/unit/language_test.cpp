@@ -428,3 +428,18 @@ TEST(Language, PlacesNamedAfterVehiclesSisterBrandsRampsAndAngles) {
   EXPECT_EQ(manager::decompose("create a jam on the on ramp")[0].kind, "traffic_jam");
   EXPECT_EQ(manager::decompose("now add a red one in front of the truck")[0].target, "it");
 }
+
+TEST(Language, RowsScenesKerbsTallCarsAndPairs) {
+  EXPECT_EQ(asset::parse_asset("a row of parked cars on the left").count, 4);
+  auto in = manager::decompose("Make it look like school's out: a row of parked cars on the left.");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_EQ(*view::parse_view("move the camera 2 m closer to the kerb").translation_m, (std::array<double, 3>{0, -2, 0}));
+  auto d = deletion::parse_deletion("delete both cars parked at the kerb");
+  EXPECT_EQ(d.targets[0].quantity, "n");
+  EXPECT_EQ(d.targets[0].n, 2);
+  EXPECT_EQ(deletion::parse_deletion("remove the parked cars on both sides").targets[0].quantity, "all");
+  // "about to merge" moves; "about to pull out" stands.
+  EXPECT_NE(motion::parse_motion("a car on the slip road about to merge").action, "static");
+  EXPECT_EQ(motion::parse_motion("a van about to pull out").action, "static");
+}
