@@ -113,6 +113,43 @@ std::optional<Relation> split_relation(const Words& p) {
   return std::nullopt;
 }
 
+// "the second car", "the last parked car", "two cars", "both cars": which of the matches, and how
+// many.
+void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention>& types, Selector& s) {
+  if (text::has_any(p, {"closest", "nearest", "near", "close"})) s.order = "nearest";
+  else if (text::has_any(p, {"farthest", "furthest", "far", "most distant"})) s.order = "farthest";
+  // "the last parked car", "the second to last truck": counted from the far end of the row.
+  else if (text::has_any(p, {"last", "penultimate", "final"})) s.order = "farthest";
+  if (text::has_any(p, {"penultimate"})) {
+    s.nth = 2;
+    s.quantity = "one";
+  }
+  for (size_t i = 0; i < p.size(); ++i)
+    if (int k = ordinal(p[i])) {
+      s.nth = k;
+      if (!s.order) s.order = "nearest";
+      s.quantity = "one";
+    }
+  // "two cars", "3 trucks"
+  if (!types.empty())
+    for (size_t i = 0; i < types.front().begin; ++i) {
+      size_t used = 0;
+      const auto v = text::number_at(p, i, &used);
+      if (v && *v >= 2 && i + used <= types.front().begin) {
+        s.quantity = "n";
+        s.n = int(*v);
+      }
+    }
+  if (s.order && s.quantity == "all" && !text::has_any(p, {"all", "every", "each"})) s.quantity = "one";
+  // "both cars", "both of the parked cars": two of them, the nearest two (not "on both sides").
+  const size_t both = text::find_phrase(p, "both");
+  if (both != std::string::npos && s.quantity == "all" && !types.empty() && types.front().plural &&
+      both < types.front().begin && types.front().begin - both <= 4) {
+    s.quantity = "n";
+    s.n = 2;
+  }
+}
+
 Selector parse_phrase(const Words& p, const Selector* previous) {
   Selector s;
   const auto types = lexicon::find_types(p);
@@ -169,38 +206,7 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
     s.moving = false;
   else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling"})) s.moving = true;
   s.parked = text::has_any(p, {"parked", "parking"});
-  if (text::has_any(p, {"closest", "nearest", "near", "close"})) s.order = "nearest";
-  else if (text::has_any(p, {"farthest", "furthest", "far", "most distant"})) s.order = "farthest";
-  // "the last parked car", "the second to last truck": counted from the far end of the row.
-  else if (text::has_any(p, {"last", "penultimate", "final"})) s.order = "farthest";
-  if (text::has_any(p, {"penultimate"})) {
-    s.nth = 2;
-    s.quantity = "one";
-  }
-  for (size_t i = 0; i < p.size(); ++i)
-    if (int k = ordinal(p[i])) {
-      s.nth = k;
-      if (!s.order) s.order = "nearest";
-      s.quantity = "one";
-    }
-  // "two cars", "3 trucks"
-  if (!types.empty())
-    for (size_t i = 0; i < types.front().begin; ++i) {
-      size_t used = 0;
-      const auto v = text::number_at(p, i, &used);
-      if (v && *v >= 2 && i + used <= types.front().begin) {
-        s.quantity = "n";
-        s.n = int(*v);
-      }
-    }
-  if (s.order && s.quantity == "all" && !text::has_any(p, {"all", "every", "each"})) s.quantity = "one";
-  // "both cars", "both of the parked cars": two of them, the nearest two (not "on both sides").
-  const size_t both = text::find_phrase(p, "both");
-  if (both != std::string::npos && s.quantity == "all" && !types.empty() && types.front().plural &&
-      both < types.front().begin && types.front().begin - both <= 4) {
-    s.quantity = "n";
-    s.n = 2;
-  }
+  read_order_and_count(p, types, s);
   return s;
 }
 
@@ -336,60 +342,57 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   return r;
 }
 
-static nlohmann::json selector_json(const Selector& s) {
-  nlohmann::json j{{"category", s.category}, {"noun", s.noun}, {"quantity", s.quantity}};
-  if (s.quantity == "n") j["n"] = s.n;
-  if (s.color) j["color"] = *s.color;
-  if (s.region) j["region"] = *s.region;
-  if (s.lane) j["lane"] = *s.lane;
-  if (s.road_side) j["road_side"] = *s.road_side;
-  if (s.of_previous) j["of_previous"] = *s.of_previous;
-  if (s.anchor_only) j["anchor_only"] = true;
-  if (s.approaching) j["approaching"] = *s.approaching;
-  if (s.moving) j["moving"] = *s.moving;
-  if (s.parked) j["parked"] = true;
-  if (s.order) {
-    j["order"] = *s.order;
-    j["nth"] = s.nth;
+namespace {
+
+// "parked" where the map has a kerb: not a car waiting in a lane (if any is left); "the bike"
+// with no bicycle about: a motorbike is a bike too.
+void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::vector<Candidate>& cands,
+                     std::vector<const Candidate*>& m) {
+  // "parked" where the map has a kerb to park at: not a car waiting in a lane (if any is left).
+  if (t.parked && scene_has_parking(scene)) {
+    std::vector<const Candidate*> kerbside;
+    for (const auto* c : m)
+      if (!(c->lane.ego || c->lane.left || c->lane.middle || c->lane.right || c->lane.oncoming || c->lane.cross))
+        kerbside.push_back(c);
+    if (!kerbside.empty()) m = kerbside;
   }
-  return j;
+  // "the bike" with no bicycle about: a motorbike is a bike too.
+  if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) {
+    Selector motorbike = t;
+    motorbike.category = "vehicle.motorcycle";
+    for (const auto& c : cands)
+      if (matches(motorbike, c)) m.push_back(&c);
+  }
 }
 
-static Selector selector_from(const nlohmann::json& j) {
-  Selector s;
-  s.category = j.value("category", "vehicle");
-  s.noun = j.value("noun", "object");
-  s.quantity = j.value("quantity", "one");
-  s.n = j.value("n", 1);
-  if (j.contains("color")) s.color = j["color"].get<std::string>();
-  if (j.contains("region")) s.region = j["region"].get<std::string>();
-  if (j.contains("lane")) s.lane = j["lane"].get<std::string>();
-  if (j.contains("road_side")) s.road_side = j["road_side"].get<std::string>();
-  if (j.contains("of_previous")) s.of_previous = j["of_previous"].get<std::string>();
-  s.anchor_only = j.value("anchor_only", false);
-  if (j.contains("approaching")) s.approaching = j["approaching"].get<bool>();
-  if (j.contains("moving")) s.moving = j["moving"].get<bool>();
-  s.parked = j.value("parked", false);
-  if (j.contains("order")) s.order = j["order"].get<std::string>();
-  s.nth = j.value("nth", 1);
-  return s;
+// Of the matches, the kind the words say first: passenger cars for "car", tall ones for "SUV",
+// and the order asked ("the last", "the car behind me": the most nearly straight behind).
+void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
+  // "the white car", "both cars" mean passenger cars when any match, not the white bus ("all cars"
+  // is every vehicle: the dev cases' reading).
+  if (t.quantity != "all" && t.category == "vehicle" && t.noun.find("car") != std::string::npos) {
+    std::vector<const Candidate*> cars;
+    for (const auto* c : m)
+      if (c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency"))
+        cars.push_back(c);
+    if (!cars.empty()) m = cars;
+  }
+  // "the white SUV": of the cars that match, the tall ones.
+  if (t.noun == "suv" || t.noun == "suvs" || t.noun == "jeep" || t.noun == "crossover") {
+    std::vector<const Candidate*> tall;
+    for (const auto* c : m)
+      if (c->object->size_lwh.z() >= 1.65) tall.push_back(c);
+    if (!tall.empty()) m = tall;
+  }
+  if (t.order == "farthest") std::reverse(m.begin(), m.end());
+  // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.
+  if (!t.order && t.quantity == "one" && (t.region == "front" || t.region == "back"))
+    std::stable_sort(m.begin(), m.end(), [](const Candidate* a, const Candidate* b) {
+      return std::abs(a->pe.y()) + 0.1 * a->pe.norm() < std::abs(b->pe.y()) + 0.1 * b->pe.norm();
+    });
 }
 
-nlohmann::json to_json(const DeletionRequest& r) {
-  nlohmann::json j{{"targets", nlohmann::json::array()}, {"except", nlohmann::json::array()}};
-  for (const auto& s : r.targets) j["targets"].push_back(selector_json(s));
-  for (const auto& s : r.except) j["except"].push_back(selector_json(s));
-  if (r.unsupported) j["unsupported"] = *r.unsupported;
-  return j;
-}
-
-DeletionRequest deletion_request_from_json(const nlohmann::json& j) {
-  DeletionRequest r;
-  for (const auto& s : j.value("targets", nlohmann::json::array())) r.targets.push_back(selector_from(s));
-  for (const auto& s : j.value("except", nlohmann::json::array())) r.except.push_back(selector_from(s));
-  if (j.contains("unsupported")) r.unsupported = j["unsupported"].get<std::string>();
-  return r;
-}
+}  // namespace
 
 Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, const std::vector<std::string>& removed) {
   Selection out;
@@ -421,47 +424,13 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     for (const auto& c : cands)
       if (matches(t, c)) m.push_back(&c);
     if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
-    // "parked" where the map has a kerb to park at: not a car waiting in a lane (if any is left).
-    if (t.parked && scene_has_parking(scene)) {
-      std::vector<const Candidate*> kerbside;
-      for (const auto* c : m)
-        if (!(c->lane.ego || c->lane.left || c->lane.middle || c->lane.right || c->lane.oncoming || c->lane.cross))
-          kerbside.push_back(c);
-      if (!kerbside.empty()) m = kerbside;
-    }
-    // "the bike" with no bicycle about: a motorbike is a bike too.
-    if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) {
-      Selector motorbike = t;
-      motorbike.category = "vehicle.motorcycle";
-      for (const auto& c : cands)
-        if (matches(motorbike, c)) m.push_back(&c);
-    }
+    widen_or_narrow(t, scene, cands, m);
     if (m.empty()) {
       out.problems.push_back("no " + describe(t).substr(t.quantity == "all" ? 6 : 4) + " in the scene" +
                              (removed.empty() ? "" : " (or it was already removed)"));
       continue;
     }
-    // "the white car", "both cars" mean passenger cars when any match, not the white bus ("all cars"
-    // is every vehicle: the dev cases' reading).
-    if (t.quantity != "all" && t.category == "vehicle" && t.noun.find("car") != std::string::npos) {
-      std::vector<const Candidate*> cars;
-      for (const auto* c : m)
-        if (c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency")) cars.push_back(c);
-      if (!cars.empty()) m = cars;
-    }
-    // "the white SUV": of the cars that match, the tall ones.
-    if (t.noun == "suv" || t.noun == "suvs" || t.noun == "jeep" || t.noun == "crossover") {
-      std::vector<const Candidate*> tall;
-      for (const auto* c : m)
-        if (c->object->size_lwh.z() >= 1.65) tall.push_back(c);
-      if (!tall.empty()) m = tall;
-    }
-    if (t.order == "farthest") std::reverse(m.begin(), m.end());
-    // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.
-    if (!t.order && t.quantity == "one" && (t.region == "front" || t.region == "back"))
-      std::stable_sort(m.begin(), m.end(), [](const Candidate* a, const Candidate* b) {
-        return std::abs(a->pe.y()) + 0.1 * a->pe.norm() < std::abs(b->pe.y()) + 0.1 * b->pe.norm();
-      });
+    prefer_said_kind(t, m);
     last = m.front();
     if (t.anchor_only) continue;
     if (t.quantity == "all") {

@@ -230,44 +230,17 @@ std::string reference_in(const std::string& clause) {
   return "it";  // "it", "its", or nothing said: the vehicle spoken about last
 }
 
-std::vector<Instruction> decompose(const std::string& command) {
-  std::vector<Instruction> out;
-  for (const auto& sentence : sentences(command)) {
-    // "Simulate a breakdown: a van stopped in my lane, cones behind it": a title the detail after
-    // the colon carries out; it stays only when it is something to do by itself.
-    if (const size_t colon = sentence.find(':'); colon != std::string::npos) {
-      auto title = decompose(sentence.substr(0, colon));
-      auto body = decompose(sentence.substr(colon + 1));
-      // "Make it look like school's out: ..." describes the scene the detail builds.
-      const bool scene_title = text::has_any(text::words(sentence.substr(0, colon)),
-                                             {"look like", "looks like", "as if", "as though", "feel like"});
-      const auto unclear = [](const Instruction& i) { return i.kind == "unclear"; };
-      if ((scene_title || std::all_of(title.begin(), title.end(), unclear)) &&
-          !std::all_of(body.begin(), body.end(), unclear))
-        title.clear();
-      out.insert(out.end(), title.begin(), title.end());
-      out.insert(out.end(), body.begin(), body.end());
-      continue;
-    }
-    // Words plus which ones had a comma before them.
-    Words w;
-    std::vector<bool> comma;
-    bool pending_comma = false;
-    std::string cur;
-    for (size_t i = 0; i <= sentence.size(); ++i) {
-      const char ch = i < sentence.size() ? sentence[i] : ' ';
-      if (ch == ',' || ch == ':') {
-        auto ws = text::words(cur);
-        text::turns_to_degrees(ws);
-        for (size_t k = 0; k < ws.size(); ++k) {
-          w.push_back(ws[k]);
-          comma.push_back(k == 0 && pending_comma);
-        }
-        cur.clear();
-        pending_comma = true;
-        continue;
-      }
+namespace {
+// A sentence's words, and which ones had a comma (or colon) before them; turns become degrees
+// per comma part so that the flags stay on their words.
+void words_with_commas(const std::string& sentence, Words& w, std::vector<bool>& comma) {
+  bool pending_comma = false;
+  std::string cur;
+  for (size_t i = 0; i <= sentence.size(); ++i) {
+    const char ch = i < sentence.size() ? sentence[i] : ',';
+    if (ch != ',' && ch != ':') {
       cur.push_back(ch);
+      continue;
     }
     auto ws = text::words(cur);
     text::turns_to_degrees(ws);
@@ -275,6 +248,39 @@ std::vector<Instruction> decompose(const std::string& command) {
       w.push_back(ws[k]);
       comma.push_back(k == 0 && pending_comma);
     }
+    cur.clear();
+    pending_comma = true;
+  }
+}
+
+// "Simulate a breakdown: a van stopped in my lane, cones behind it": a title the detail after the
+// colon carries out; it stays only when it is something to do by itself.
+std::vector<Instruction> titled(const std::string& sentence, size_t colon) {
+  auto title = decompose(sentence.substr(0, colon));
+  auto body = decompose(sentence.substr(colon + 1));
+  // "Make it look like school's out: ..." describes the scene the detail builds.
+  const bool scene_title = text::has_any(text::words(sentence.substr(0, colon)),
+                                         {"look like", "looks like", "as if", "as though", "feel like"});
+  const auto unclear = [](const Instruction& i) { return i.kind == "unclear"; };
+  if ((scene_title || std::all_of(title.begin(), title.end(), unclear)) && !std::all_of(body.begin(), body.end(), unclear))
+    title.clear();
+  title.insert(title.end(), body.begin(), body.end());
+  return title;
+}
+
+}  // namespace
+
+std::vector<Instruction> decompose(const std::string& command) {
+  std::vector<Instruction> out;
+  for (const auto& sentence : sentences(command)) {
+    if (const size_t colon = sentence.find(':'); colon != std::string::npos) {
+      const auto parts = titled(sentence, colon);
+      out.insert(out.end(), parts.begin(), parts.end());
+      continue;
+    }
+    Words w;
+    std::vector<bool> comma;
+    words_with_commas(sentence, w, comma);
     lexicon::correct_typos(w);
     std::string previous;
     for (const auto& c : clauses(w, comma)) {
