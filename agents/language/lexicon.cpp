@@ -73,71 +73,11 @@ const std::map<std::string, VehicleType>& types() {
 }
 
 struct Noun {
-  const char* phrase;
-  const char* type;
+  std::string phrase;
+  std::string type;
   bool plural;
 };
 
-// Longest phrases first (sorted below) so "police car" wins over "car", "people carrier" over "people".
-const std::vector<Noun>& nouns() {
-  static const std::vector<Noun> n = [] {
-    std::vector<Noun> list{
-      {"police cars", "police", true},   {"police car", "police", false},     {"police vehicles", "police", true},
-      {"police vehicle", "police", false}, {"cop cars", "police", true},      {"cop car", "police", false},
-      {"patrol cars", "police", true},   {"patrol car", "police", false},     {"police cruiser", "police", false},
-      {"squad car", "police", false},    {"fire trucks", "firetruck", true},  {"fire truck", "firetruck", false},
-      {"fire engines", "firetruck", true}, {"fire engine", "firetruck", false}, {"firetrucks", "firetruck", true},
-      {"firetruck", "firetruck", false}, {"traffic cones", "cone", true},     {"traffic cone", "cone", false},
-      {"pickup trucks", "truck", true},  {"pickup truck", "truck", false},    {"semi trucks", "truck", true},
-      {"semi truck", "truck", false},    {"delivery trucks", "truck", true},  {"delivery truck", "truck", false},
-      {"sports cars", "car", true},      {"sports car", "car", false},        {"race car", "car", false},
-      {"school bus", "bus", false},      {"city bus", "bus", false},          {"road barriers", "barrier", true},
-      {"road barrier", "barrier", false}, {"police", "police", false},        {"cops", "police", true},
-      {"cars", "car", true},             {"car", "car", false},               {"sedans", "car", true},
-      {"sedan", "car", false},           {"hatchback", "car", false},         {"hatchbacks", "car", true},
-      {"coupe", "car", false},           {"convertible", "car", false},       {"automobiles", "car", true},
-      {"automobile", "car", false},      {"vehicles", "car", true},           {"vehicle", "car", false},
-      {"suvs", "suv", true},             {"suv", "suv", false},               {"crossover", "suv", false},
-      {"jeeps", "suv", true},            {"trucks", "truck", true},           {"truck", "truck", false},
-      {"pickups", "truck", true},        {"pickup", "truck", false},          {"semis", "truck", true},
-      {"buses", "bus", true},            {"busses", "bus", true},             {"bus", "bus", false},
-      {"coaches", "bus", true},          {"coach", "bus", false},             {"minivans", "van", true},
-      {"minivan", "van", false},         {"vans", "van", true},               {"van", "van", false},
-      {"taxis", "taxi", true},           {"taxi", "taxi", false},             {"cabs", "taxi", true},
-      {"cab", "taxi", false},            {"ambulances", "ambulance", true},   {"ambulance", "ambulance", false},
-      {"motorcycles", "motorcycle", true}, {"motorcycle", "motorcycle", false}, {"motorbikes", "motorcycle", true},
-      {"motorbike", "motorcycle", false}, {"scooter", "motorcycle", false},   {"bicycles", "bicycle", true},
-      {"bicycle", "bicycle", false},     {"bikes", "bicycle", true},          {"bike", "bicycle", false},
-      {"cones", "cone", true},           {"cone", "cone", false},             {"pylons", "cone", true},
-      {"pylon", "cone", false},          {"barriers", "barrier", true},       {"barrier", "barrier", false},
-      {"barricades", "barrier", true},   {"barricade", "barrier", false},     {"roadblock", "barrier", false},
-      {"pedestrians", "pedestrian", true}, {"pedestrian", "pedestrian", false}, {"people", "pedestrian", true},
-      {"person", "pedestrian", false},   {"persons", "pedestrian", true},    {"walkers", "pedestrian", true},
-      {"objects", "object", true},       {"things", "object", true},         {"traffic", "car", true},
-      {"cyclists", "bicycle", true},     {"cyclist", "bicycle", false},       {"tankers", "truck", true},
-      {"tanker", "truck", false},        {"motorbike rider", "motorcycle", false},
-      // Kinds of truck, van, car and two-wheeler by what they do or how they are built.
-      {"cement mixers", "truck", true},  {"cement mixer", "truck", false},    {"concrete mixer", "truck", false},
-      {"mixer truck", "truck", false},   {"dump trucks", "truck", true},      {"dump truck", "truck", false},
-      {"tipper truck", "truck", false},  {"tipper", "truck", false},          {"box truck", "truck", false},
-      {"flatbed", "truck", false},       {"tow trucks", "truck", true},       {"tow truck", "truck", false},
-      {"recovery truck", "truck", false}, {"garbage trucks", "truck", true},  {"garbage truck", "truck", false},
-      {"bin truck", "truck", false},     {"refuse truck", "truck", false},    {"big rig", "truck", false},
-      {"18 wheeler", "truck", false},    {"articulated truck", "truck", false}, {"hgv", "truck", false},
-      {"delivery vans", "van", true},    {"delivery van", "van", false},      {"panel van", "van", false},
-      {"camper van", "van", false},      {"campervan", "van", false},         {"minibus", "van", false},
-      {"people carrier", "van", false},  {"station wagon", "car", false},     {"estate car", "car", false},
-      {"saloon", "car", false},          {"limousine", "car", false},         {"limo", "car", false},
-      {"supercar", "car", false},        {"muscle car", "car", false},        {"roadster", "car", false},
-      {"4x4", "suv", false},             {"off roader", "suv", false},        {"mopeds", "motorcycle", true},
-      {"moped", "motorcycle", false},    {"scooters", "motorcycle", true},    {"dirt bike", "motorcycle", false}};
-    std::stable_sort(list.begin(), list.end(), [](const Noun& a, const Noun& b) {
-      return text::words(a.phrase).size() > text::words(b.phrase).size();
-    });
-    return list;
-  }();
-  return n;
-}
 
 // A make and its models as vehicles.json lists them, each name already split into words.
 struct Make {
@@ -183,6 +123,37 @@ std::vector<Make> load_makes() {
 const std::vector<Make>& makes() {
   static const std::vector<Make> m = load_makes();
   return m;
+}
+
+// The nouns of agents/prompts/nouns.json, longest phrases first so that "police car" wins over
+// "car" and "people carrier" over "people".
+const std::vector<Noun>& nouns() {
+  static const std::vector<Noun> n = [] {
+    const auto file = vocabulary_file().parent_path() / "nouns.json";
+    std::ifstream in(file);
+    if (!in)
+      throw std::runtime_error("cannot read the noun list " + file.string() +
+                               " (set CHATSIM_PROMPTS to the agents/prompts folder)");
+    std::vector<Noun> list;
+    try {
+      const auto doc = nlohmann::json::parse(in);
+      for (const auto& e : doc.at("nouns")) {
+        Noun noun{e.at("phrase").get<std::string>(), e.at("type").get<std::string>(), e.value("plural", false)};
+        if (types().count(noun.type) == 0)
+          throw std::runtime_error(file.string() + ": the noun '" + noun.phrase + "' has the unknown type '" + noun.type +
+                                   "' (nouns[].type: car, suv, truck, bus, van, police, taxi, ambulance, firetruck, "
+                                   "motorcycle, bicycle, cone, barrier, pedestrian or object)");
+        list.push_back(std::move(noun));
+      }
+    } catch (const nlohmann::json::exception& e) {
+      throw std::runtime_error(file.string() + ": not a noun list (nouns: [{phrase, type, plural}]): " + e.what());
+    }
+    std::stable_sort(list.begin(), list.end(), [](const Noun& a, const Noun& b) {
+      return text::words(a.phrase).size() > text::words(b.phrase).size();
+    });
+    return list;
+  }();
+  return n;
 }
 
 bool words_at(const std::vector<std::string>& w, size_t at, const std::vector<std::string>& phrase) {
