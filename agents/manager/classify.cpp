@@ -121,14 +121,15 @@ Words active_addition(const Words& c) {
                         c[from - 1] == "needs" || c[from - 1] == "has" || c[from - 1] == "have"))
       --from;
     Words out{"add"};
-    size_t start = 0;
-    // "i want / we need / i'd like ... a van placed": the wish goes too.
-    for (size_t k = 0; k < from; ++k)
-      if (c[k] == "a" || c[k] == "an" || c[k] == "some" || c[k] == "another" || text::is_number_word(c[k]) ||
-          lexicon::find_types(Words(c.begin() + long(k), c.begin() + long(from))).size() > 0) {
-        start = k;
-        break;
-      }
+    // "i want / we need / i'd like ... a van placed": the wish goes too; the vehicle starts at its
+    // article or number, else at its noun.
+    size_t start = std::string::npos;
+    for (size_t k = 0; k < from && start == std::string::npos; ++k)
+      if (c[k] == "a" || c[k] == "an" || c[k] == "some" || c[k] == "another" || text::is_number_word(c[k])) start = k;
+    if (start == std::string::npos) {
+      const auto nouns = lexicon::find_types(Words(c.begin(), c.begin() + long(from)));
+      start = nouns.empty() ? 0 : nouns.front().begin;
+    }
     out.insert(out.end(), c.begin() + long(start), c.begin() + long(from));
     out.insert(out.end(), c.begin() + long(i) + 1, c.end());
     return out;

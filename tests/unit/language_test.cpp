@@ -245,7 +245,9 @@ TEST(Language, AdditionsSaidInThePassiveOrWithANewSubject) {
   ASSERT_EQ(in.size(), 1u);
   EXPECT_EQ(in[0].kind, "add");
   EXPECT_EQ(in[0].text, "add a navy genesis gv80 about forty five meters ahead");
-  EXPECT_EQ(manager::decompose("I want a white van placed behind me")[0].kind, "add");
+  in = manager::decompose("I want a white van placed behind me");
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_EQ(in[0].text, "add a white van behind me");  // the wish goes with the passive
   EXPECT_EQ(manager::decompose("a pickup should come out of the side street")[0].kind, "add");
   // Not new: a vehicle named with "the", a pronoun, or a number that is an amount.
   EXPECT_EQ(manager::decompose("the added car should be placed 10 m further ahead")[0].kind, "revise");
