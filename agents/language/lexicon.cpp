@@ -76,6 +76,7 @@ struct Noun {
   std::string phrase;
   std::string type;
   bool plural;
+  std::vector<std::string> words;  // the phrase split once, at load: find_types runs per clause
 };
 
 
@@ -138,7 +139,8 @@ const std::vector<Noun>& nouns() {
     try {
       const auto doc = nlohmann::json::parse(in);
       for (const auto& e : doc.at("nouns")) {
-        Noun noun{e.at("phrase").get<std::string>(), e.at("type").get<std::string>(), e.value("plural", false)};
+        Noun noun{e.at("phrase").get<std::string>(), e.at("type").get<std::string>(), e.value("plural", false), {}};
+        noun.words = text::words(noun.phrase);
         if (types().count(noun.type) == 0)
           throw std::runtime_error(file.string() + ": the noun '" + noun.phrase + "' has the unknown type '" + noun.type +
                                    "' (nouns[].type: car, suv, truck, bus, van, police, taxi, ambulance, firetruck, "
@@ -149,7 +151,7 @@ const std::vector<Noun>& nouns() {
       throw std::runtime_error(file.string() + ": not a noun list (nouns: [{phrase, type, plural}]): " + e.what());
     }
     std::stable_sort(list.begin(), list.end(), [](const Noun& a, const Noun& b) {
-      return text::words(a.phrase).size() > text::words(b.phrase).size();
+      return a.words.size() > b.words.size();
     });
     return list;
   }();
@@ -224,7 +226,7 @@ const std::vector<std::string>& known_words() {
     }
     for (const auto& c : base_colors()) out.push_back(c.name);
     for (const auto& n : nouns())
-      for (const auto& w : text::words(n.phrase)) out.push_back(w);
+      out.insert(out.end(), n.words.begin(), n.words.end());
     for (const auto& m : makes()) {
       for (const auto& name : m.names) out.insert(out.end(), name.begin(), name.end());
       for (const auto& model : m.models) out.insert(out.end(), model.first.begin(), model.first.end());
@@ -338,8 +340,9 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
   std::vector<TypeMention> out;
   std::vector<bool> used(w.size(), false);
   for (const auto& n : nouns()) {
-    const auto nw = text::words(n.phrase);
-    for (size_t at = text::find_phrase(w, n.phrase); at != std::string::npos; at = text::find_phrase(w, n.phrase, at + 1)) {
+    const auto& nw = n.words;
+    for (size_t at = 0; at + nw.size() <= w.size(); ++at) {
+      if (!words_at(w, at, nw)) continue;
       bool free = true;
       for (size_t k = 0; k < nw.size(); ++k) free = free && !used[at + k];
       if (!free) continue;

@@ -184,6 +184,7 @@ class Node {
 
   void add_subscription(Subscription sub);
   std::optional<Message> receive(std::chrono::milliseconds timeout);
+  std::optional<Message> next_reply(std::chrono::milliseconds wait);
   // One waiting message, if any; `took` tells an invalid (dropped) one from none waiting.
   std::optional<Message> take_from(zmq::socket_t& socket, bool& took);
   void open_inbox();

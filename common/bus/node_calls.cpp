@@ -10,6 +10,21 @@
 
 namespace chatsim::bus {
 
+// While a call waits: heartbeats and topics asked for are handled, other messages are queued
+// for later, and only a message on the reply topic is returned.
+std::optional<Message> Node::next_reply(std::chrono::milliseconds wait) {
+  auto m = receive(wait);
+  if (!m) return std::nullopt;
+  if (m->topic() == topics::kHeartbeat ||
+      std::find(call_dispatch_.begin(), call_dispatch_.end(), m->topic()) != call_dispatch_.end()) {
+    dispatch(*m);
+    return std::nullopt;
+  }
+  if (m->topic() == reply_topic_) return m;
+  queued_.push_back(std::move(*m));
+  return std::nullopt;
+}
+
 CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fbb,
                       msgs::Payload type, flatbuffers::Offset<void> payload,
                       std::chrono::milliseconds timeout,
@@ -38,22 +53,13 @@ CallResult Node::call(std::string_view topic, flatbuffers::FlatBufferBuilder& fb
         return result;
       }
     }
-    auto m = receive(std::min(left, std::chrono::milliseconds(100)));
+    auto m = next_reply(std::min(left, std::chrono::milliseconds(100)));
     if (!m) continue;
-    if (m->topic() == topics::kHeartbeat ||
-        std::find(call_dispatch_.begin(), call_dispatch_.end(), m->topic()) != call_dispatch_.end()) {
-      dispatch(*m);
-      continue;
+    if (m->correlation_id() == correlation) {
+      result.response = std::move(m);
+      return result;
     }
-    if (m->topic() == reply_topic_) {
-      if (m->correlation_id() == correlation) {
-        result.response = std::move(m);
-        return result;
-      }
-      stats_.late_replies.fetch_add(1, std::memory_order_relaxed);
-      continue;
-    }
-    queued_.push_back(std::move(*m));
+    stats_.late_replies.fetch_add(1, std::memory_order_relaxed);
   }
   result.error = msgs::ErrorCode::DeadlineExceeded;
   result.error_message = "no response on '" + std::string(topic) + "' within " +
@@ -94,27 +100,18 @@ std::vector<CallResult> Node::call_many(std::vector<Request>& requests, std::chr
     }
     if (waiting == 0) break;
     const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - now);
-    auto m = receive(std::min(left, std::chrono::milliseconds(100)));
+    auto m = next_reply(std::min(left, std::chrono::milliseconds(100)));
     if (!m) continue;
-    if (m->topic() == topics::kHeartbeat ||
-        std::find(call_dispatch_.begin(), call_dispatch_.end(), m->topic()) != call_dispatch_.end()) {
-      dispatch(*m);
-      continue;
-    }
-    if (m->topic() == reply_topic_) {
-      bool matched = false;
-      for (size_t i = 0; i < requests.size(); ++i)
-        if (open[i] && m->correlation_id() == correlation[i]) {
-          results[i].response = std::move(m);
-          open[i] = false;
-          --waiting;
-          matched = true;
-          break;
-        }
-      if (!matched) stats_.late_replies.fetch_add(1, std::memory_order_relaxed);
-      continue;
-    }
-    queued_.push_back(std::move(*m));
+    bool matched = false;
+    for (size_t i = 0; i < requests.size(); ++i)
+      if (open[i] && m->correlation_id() == correlation[i]) {
+        results[i].response = std::move(m);
+        open[i] = false;
+        --waiting;
+        matched = true;
+        break;
+      }
+    if (!matched) stats_.late_replies.fetch_add(1, std::memory_order_relaxed);
   }
   for (size_t i = 0; i < requests.size(); ++i)
     if (open[i]) {
