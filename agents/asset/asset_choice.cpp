@@ -1,5 +1,6 @@
 #include "agents/asset/asset_choice.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include "agents/asset/catalog.hpp"
@@ -26,6 +27,22 @@ std::optional<std::string> unknown_brand_in(const std::string& instruction, cons
   return instruction.substr(at, before.size());
 }
 
+// "faster than the traffic", "through the cars": a noun a preposition governs is where or what
+// the added vehicle is compared with, not what is added.
+bool governed_by_preposition(const std::vector<std::string>& w, size_t begin) {
+  static const char* determiners[] = {"the", "a", "an", "other", "all", "some", "this", "that", "those", "these", "my",
+                                      "our", "any", "slow", "slower", "parked", "moving", "recorded", "existing"};
+  static const char* prepositions[] = {"than", "with", "through", "past", "around", "amid", "amongst", "from", "against",
+                                       "into", "onto", "among", "between", "toward", "towards", "behind", "beside"};
+  size_t i = begin;
+  while (i > 0 && (std::find_if(std::begin(determiners), std::end(determiners),
+                                [&](const char* d) { return w[i - 1] == d; }) != std::end(determiners) ||
+                   lexicon::is_color_word(w[i - 1])))
+    --i;
+  return i > 0 && std::find_if(std::begin(prepositions), std::end(prepositions),
+                               [&](const char* p) { return w[i - 1] == p; }) != std::end(prepositions);
+}
+
 }  // namespace
 
 AssetRequest parse_asset(const std::string& instruction) {
@@ -41,7 +58,11 @@ AssetRequest parse_asset(const std::string& instruction) {
                                         "right of the", "like the", "same as the"});
   if (rel != std::string::npos && rel > 0) w.resize(rel);
   AssetRequest r;
-  const auto types = lexicon::find_types(w);
+  auto types = lexicon::find_types(w);
+  // Unless nothing else names what is added: "block the lanes with barriers", "turn it into a van".
+  auto ungoverned = types;
+  std::erase_if(ungoverned, [&](const lexicon::TypeMention& t) { return governed_by_preposition(w, t.begin); });
+  if (!ungoverned.empty() || !lexicon::find_brands(w).empty()) types = ungoverned;
   for (size_t k = 0; k < types.size(); ++k) {
     const auto& t = types[k];
     if (t.type.type == "object" || t.type.type == "pedestrian") continue;

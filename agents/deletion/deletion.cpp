@@ -288,13 +288,19 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   const size_t except_at = text::find_any(w, {"except", "but not", "other than", "apart from", "besides", "but the",
                                               "excluding", "save for", "but leave", "but keep"}, &except_len);
   const size_t end = except_at == std::string::npos ? w.size() : except_at;
-  // Skip the verb: the phrase starts after remove/delete/erase/get rid of ...
+  // Skip the verb: the phrase starts after remove/delete/erase/get rid of ... Only the first verb
+  // and the words right after it count: the "of" in "my side of the road" is not "rid of".
   size_t begin = 0;
+  bool verb_seen = false;
   for (size_t i = 0; i < end; ++i) {
     static const char* verbs[] = {"remove", "delete", "erase", "rid", "clear", "eliminate", "take", "drop", "hide",
                                   "removes", "deletes", "erases", "away", "of"};
-    for (const char* v : verbs)
-      if (w[i] == v) begin = i + 1;
+    const bool verb = std::find_if(std::begin(verbs), std::end(verbs), [&](const char* v) { return w[i] == v; }) !=
+                      std::end(verbs);
+    if (verb && (!verb_seen || i == begin)) {
+      begin = i + 1;
+      verb_seen = true;
+    }
     if (lexicon::find_types({w[i]}).size() > 0) break;
   }
   const Selector* prev = nullptr;

@@ -350,7 +350,10 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
       static const char* kPlaces[] = {"bay", "bays", "stop", "stops", "lane", "lanes", "station", "shelter", "park",
                                       "rank", "depot", "garage", "wash", "dealership"};
       const size_t after = at + nw.size();
-      if (after < w.size() && std::any_of(std::begin(kPlaces), std::end(kPlaces), [&](const char* p) { return w[after] == p; }))
+      // "a motorbike lane splitting": riding between lanes, not a lane.
+      const bool activity = after + 1 < w.size() && (w[after + 1] == "splitting" || w[after + 1] == "filtering");
+      if (after < w.size() && !activity &&
+          std::any_of(std::begin(kPlaces), std::end(kPlaces), [&](const char* p) { return w[after] == p; }))
         continue;
       for (size_t k = 0; k < nw.size(); ++k) used[at + k] = true;
       out.push_back({types().at(n.type), at, at + nw.size(), n.plural});

@@ -169,6 +169,23 @@ Words causative_addition(const Words& c) {
   return out;
 }
 
+// "make the parking on the left full of cars", "fill the kerb with vans", "line the street with
+// parked cars": a place filled with vehicles is a row of them parked there.
+Words fill_addition(const Words& c) {
+  if (c.size() < 4 || (c[0] != "make" && c[0] != "fill" && c[0] != "line" && c[0] != "pack" && c[0] != "have"))
+    return c;
+  const size_t link = text::find_any(c, {"full of", "filled with", "packed with", "lined with", "with"});
+  if (link == std::string::npos || link < 2) return c;
+  const size_t noun_from = link + (c[link] == "with" ? 1 : 2);
+  const auto types = lexicon::find_types(Words(c.begin() + long(noun_from), c.end()));
+  if (types.empty() || !types.front().plural || types.front().type.type == "pedestrian") return c;
+  Words out{"add", "a", "row", "of", "parked"};
+  out.insert(out.end(), c.begin() + long(noun_from + types.front().begin), c.begin() + long(noun_from + types.front().end));
+  out.push_back("in");
+  out.insert(out.end(), c.begin() + 1, c.begin() + long(link));
+  return out;
+}
+
 // "a pickup should come out of the side street": a vehicle named with "a" as the subject is new.
 bool indefinite_vehicle_subject(const Words& c) {
   if (c.size() < 2 || !(c[0] == "a" || c[0] == "an" || c[0] == "another" || (text::is_number_word(c[0]) && c[0] != "half")))
@@ -289,10 +306,12 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
 }  // namespace
 
 Instruction classify(const Words& c_in) {
-  const Words c = causative_addition(topic_first(active_addition(c_in)));
+  Words c = causative_addition(topic_first(active_addition(c_in)));
   Instruction in;
   in.text = text::join(c);
   if (classify_whole(c, in)) return in;
+  c = fill_addition(c);  // not "fill the far side with heavy traffic" (a busy road, above)
+  in.text = text::join(c);
   const bool vehicle = mentions_vehicle(c);
   const bool added_ref = refers_to_added(c);
   if (classify_deletion(c, vehicle, added_ref, in) || classify_addition(c, vehicle, in)) return in;

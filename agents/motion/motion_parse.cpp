@@ -158,7 +158,8 @@ std::optional<std::string> find_lane(const Words& w_in) {
     return "oncoming";
   if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane"}))
     return "cross";
-  if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot"}))
+  if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot",
+                  "the parking", "parking bay", "parking area", "parking spaces", "parking spots", "parking strip"}))
     return "parking";
   if (has_any(w, {"left lane", "lane to my left", "lane on the left", "lane to the left", "adjacent lane"})) return "left";
   if (has_any(w, {"right lane", "lane to my right", "lane on the right", "lane to the right"})) return "right";
@@ -232,7 +233,7 @@ std::optional<std::string> find_action(const Words& w) {
                   "keeps going", "moving forward", "driving forward", "drives forward", "goes ahead", "drive forward",
                   "go forward", "move forward", "drive off", "drives off", "drive away", "drives away", "pull out",
                   "pulls out", "set off", "sets off", "move off", "moves off", "start moving", "start driving",
-                  "get going", "pull away", "pulls away"}))
+                  "get going", "pull away", "pulls away", "filtering", "lane splitting", "splitting lanes"}))
     return "straight";
   return std::nullopt;
 }
@@ -367,6 +368,17 @@ std::optional<std::string> find_lane_edge(Words& w) {
                          feature == "edge of the road" || feature == "verge";
       return outer ? "outer" : "inner";
     }
+  // "filtering between us and the oncoming traffic", "lane splitting": riding the lane's edge by
+  // the other way's traffic, going the lane's way; what it rides between is no place to start.
+  for (const char* p : {"between us and", "between me and", "between my car and"})
+    if (const size_t at = find_phrase(w, p); at != std::string::npos) {
+      size_t end = at + text::words(p).size();
+      while (end < w.size() && end < at + 8 && w[end] != "and" && w[end] != "at" && w[end] != "with") ++end;
+      std::fill(w.begin() + long(at), w.begin() + long(end), "_");
+      return "inner";
+    }
+  if (has_any(w, {"filtering", "lane splitting", "splitting lanes", "splitting the lanes", "filters", "filter"}))
+    return "inner";
   // "the fast lane" says which lane, not how fast: its first word goes.
   static const std::pair<const char*, const char*> named[] = {
       {"inner lane", "inner"}, {"inside lane", "inner"},  {"fast lane", "inner"},     {"overtaking lane", "inner"},

@@ -60,6 +60,15 @@ Obstacle trajectory_obstacle(const std::string& id, const Eigen::Vector3d& size,
 
 namespace detail {
 
+// "park it in the parking lane": the side of the road the nearest parking lane is on (the right
+// where there is none).
+std::string nearest_parking_side(const scene::Scene& scene) {
+  const auto nearest = scene.lanes.nearest(ego_frame(scene).p, "parking");
+  if (!nearest) return "right_front";
+  const Eigen::Vector2d pe = ego_frame(scene).to_ego(scene.lanes.point_at(nearest->lane, nearest->s));
+  return pe.y() > 0 ? "left_front" : "right_front";
+}
+
 Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(scene), req_(req), m_(req.intent) {
   ego_ = ego_frame(scene);
   for (const auto& f : scene.frames) times_.push_back(f.timestamp_s - scene.frames.front().timestamp_s);
@@ -69,7 +78,7 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
     m_.action = "static";
     m_.speed = "static";
   }
-  if (!m_.relative && !m_.placement) m_.placement = m_.lane == "parking" ? "right_front" : "front";
+  if (!m_.relative && !m_.placement) m_.placement = m_.lane == "parking" ? nearest_parking_side(scene) : "front";
   // Overtaking from beside or ahead moves away from the ego's start; from behind it moves
   // toward it, which the lanes' own direction already gives.
   if (m_.overtake.value_or(false) && !m_.direction && m_.placement != "back") m_.direction = "away";
@@ -85,27 +94,39 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
 }
 
 PlanResult Planner::run() {
-  PlanResult first = run_once();
-  // Nothing free (or nothing at all) near the place asked for: look twice as far around it.
-  if ((collided_ || !first.ok) && !m_.relative) {
-    widen_ = 2.0;
+  PlanResult best = run_once();
+  bool best_collided = collided_;
+  // Nothing free (or nothing at all, or not on the lane asked for) near the place asked for: look
+  // twice as far around it; for a turn or lane change at a distance said, then further still (one
+  // behind slower traffic fits in the clip only from ahead of it).
+  const bool missed_lane = best.ok && lane_missed_;
+  for (double widen : {2.0, 3.5}) {
+    const bool manoeuvre = m_.action && (m_.action->rfind("turn_", 0) == 0 || m_.action->rfind("lane_change", 0) == 0);
+    if (m_.relative || (best.ok && !best_collided && !missed_lane) || (widen > 2.0 && !(m_.distance_m && manoeuvre)))
+      break;
+    widen_ = widen;
     collided_ = false;
-    PlanResult second = run_once();
-    if (second.ok && !collided_) {
-      second.notes.push_back("nothing was free " + (m_.distance_m ? fmt(*m_.distance_m) + " m away" : "in the " +
-                             describe_placement() + " region") + ", so it starts a little further round (" +
-                             fmt(second.resolved.distance_m.value_or(0)) + " m away)");
-      return second;
+    PlanResult next = run_once();
+    // Better than what there is: clean, and on the lane asked for when what there is is clean.
+    const bool best_clean = best.ok && !best_collided;
+    if (next.ok && !collided_ && !(best_clean && lane_missed_)) {
+      next.notes.push_back("nothing was free " + (m_.distance_m ? fmt(*m_.distance_m) + " m away" : "in the " +
+                           describe_placement() + " region") + ", so it starts a little further round (" +
+                           fmt(next.resolved.distance_m.value_or(0)) + " m away)");
+      return next;
     }
-    if (!first.ok) first = second;
+    if (!best.ok) {
+      best = next;
+      best_collided = collided_;
+    }
   }
   // A path that meets another vehicle is no answer: say so instead of keeping it.
-  if (first.ok && collided_) {
+  if (best.ok && best_collided) {
     PlanResult refused;
-    refused.reason = first.notes.back();
+    refused.reason = best.notes.back();
     return refused;
   }
-  return first;
+  return best;
 }
 
 PlanResult Planner::run_once() {
@@ -189,7 +210,8 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
   result.lane = scene_.lanes.lanes()[size_t(c.lane)].id;
   // The lane asked for had no start that works: say which lane it got instead.
   const bool edge_missed = m_.lane_edge && lane_edge_penalties()[size_t(c.lane)] > 1.0;
-  if (edge_missed || (m_.lane && lane_hint_penalty(c.lane, c.s) >= 60))
+  lane_missed_ = edge_missed || (m_.lane && lane_hint_penalty(c.lane, c.s) >= 60);
+  if (lane_missed_)
     result.notes.push_back("no start in the " + (edge_missed ? *m_.lane_edge : *m_.lane) +
                            " lane was free of other traffic; it drives in lane " + result.lane + " instead");
   result.speed_mps = e.speed;

@@ -133,6 +133,7 @@ class Planner {
   int ego_lane_ = -1;
   double widen_ = 1.0;     // distance tolerance factor (see run)
   bool collided_ = false;  // the last run_once accepted a collision
+  mutable bool lane_missed_ = false;  // the last run_once's start is not on the lane asked for
 };
 
 }  // namespace chatsim::agents::motion::detail

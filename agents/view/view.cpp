@@ -49,6 +49,48 @@ Words with_units(Words w) {
   return w;
 }
 
+// "up" or "down" before a determiner is a preposition: "look down the side street", "drive 10 m
+// down the road" say where, not which way the camera tilts or moves.
+bool is_preposition(const Words& w, size_t i) {
+  return (w[i] == "up" || w[i] == "down") && i + 1 < w.size() &&
+         (w[i + 1] == "the" || w[i + 1] == "this" || w[i + 1] == "that" || w[i + 1] == "my");
+}
+
+// The turn an angle's direction word means: yaw (left positive) or pitch (up positive).
+std::optional<std::pair<bool, double>> rotation_word(const Words& w, size_t i) {
+  if (is_preposition(w, i)) return std::nullopt;
+  if (w[i] == "left" || w[i] == "counterclockwise" || w[i] == "anticlockwise") return std::pair{false, 1.0};
+  if (w[i] == "right" || w[i] == "clockwise") return std::pair{false, -1.0};
+  if (w[i] == "up" || w[i] == "upward" || w[i] == "upwards") return std::pair{true, 1.0};
+  if (w[i] == "down" || w[i] == "downward" || w[i] == "downwards") return std::pair{true, -1.0};
+  return std::nullopt;
+}
+
+bool clause_break(const std::string& w) { return w == "and" || w == "then" || w == "but" || w == "while"; }
+
+// Rotations: "30 degrees to the left", "look 15 degrees right", "10 degrees right and 5 up".
+// Each angle takes the direction word next to it (after it first, then before it), never one
+// across "and" or another angle, and that word says its axis: a pitch word elsewhere in the
+// sentence does not make every angle a pitch.
+void add_rotations(const Words& w, ViewChange& v) {
+  const auto angles = text::quantities(w, {"degrees", "degree", "deg", "°"});
+  for (size_t k = 0; k < angles.size(); ++k) {
+    const auto& q = angles[k];
+    std::optional<std::pair<bool, double>> dir;
+    const size_t next = k + 1 < angles.size() ? angles[k + 1].begin : w.size();
+    for (size_t i = q.end; i < std::min(next, q.end + 4) && !dir && !clause_break(w[i]); ++i) dir = rotation_word(w, i);
+    const size_t prev = k > 0 ? angles[k - 1].end : 0;
+    for (size_t i = q.begin; i-- > prev && q.begin - i <= 4 && !dir && !clause_break(w[i]);) dir = rotation_word(w, i);
+    if (!dir) {
+      // Unsaid direction: counter-clockwise (the mathematical sense) or up; the verb says the axis.
+      Words before(w.begin() + long(prev), w.begin() + long(q.begin));
+      dir = std::pair{text::has_any(before, {"tilt", "pitch", "tilted", "tilts"}), 1.0};
+    }
+    auto& angle = dir->first ? v.pitch_deg : v.yaw_deg;
+    angle = angle.value_or(0) + dir->second * q.value;
+  }
+}
+
 void add_translations(const Words& w_in, ViewChange& v) {
   Words w = w_in;
   // "2 m closer to the kerb" (right-hand traffic: the kerb is on the right), "toward the middle
@@ -58,7 +100,9 @@ void add_translations(const Words& w_in, ViewChange& v) {
                                      std::pair{"toward the sidewalk", "right"}, std::pair{"toward the pavement", "right"},
                                      std::pair{"toward the middle of the road", "left"},
                                      std::pair{"toward the center of the road", "left"},
-                                     std::pair{"toward the center line", "left"}})
+                                     std::pair{"toward the center line", "left"}, std::pair{"down the road", "ahead"},
+                                     std::pair{"up the road", "ahead"}, std::pair{"down the street", "ahead"},
+                                     std::pair{"up the street", "ahead"}})
     for (size_t at = text::find_phrase(w, phrase); at != std::string::npos; at = text::find_phrase(w, phrase)) {
       const size_t n = text::words(phrase).size();
       w.erase(w.begin() + long(at), w.begin() + long(at + n));
@@ -95,6 +139,7 @@ void add_translations(const Words& w_in, ViewChange& v) {
       for (size_t i = q.end; i < std::min(next_start, q.end + 4); ++i) {
         // "further back": "further" only strengthens the direction word after it.
         if ((wu[i] == "further" || wu[i] == "farther") && i + 1 < wu.size() && direction_word(wu[i + 1])) continue;
+        if (is_preposition(wu, i)) continue;
         if (auto d = direction_word(wu[i])) return d;
       }
       return std::nullopt;
@@ -102,7 +147,7 @@ void add_translations(const Words& w_in, ViewChange& v) {
     auto before = [&]() -> std::optional<std::pair<int, double>> {
       const size_t prev_end = k > 0 ? distances[k - 1].end : 0;
       for (size_t i = q.begin; i-- > prev_end && q.begin - i <= 5;)
-        if (auto d = direction_word(wu[i])) return d;
+        if (auto d = direction_word(wu[i]); d && !is_preposition(wu, i)) return d;
       return std::nullopt;
     };
     auto dir = lead ? before() : after();
@@ -119,22 +164,7 @@ ViewChange parse_view(const std::string& instruction) {
   const Words w = text::words(instruction);
   ViewChange v;
   if (text::has_any(w, {"reset the view", "original view", "reset view", "reset the camera", "default view"})) v.reset = true;
-  // Rotations: "30 degrees to the left", "look 15 degrees right", "tilt up 10 degrees".
-  const bool pitch = text::has_any(w, {"tilt", "pitch", "look up", "look down", "tilted", "tilts"});
-  for (const auto& q : text::quantities(w, {"degrees", "degree", "deg", "°"})) {
-    double sign = 0;
-    for (size_t i = q.end; i < std::min(w.size(), q.end + 4) && sign == 0; ++i) {
-      if (w[i] == "left" || w[i] == "up" || w[i] == "counterclockwise" || w[i] == "anticlockwise") sign = 1;
-      if (w[i] == "right" || w[i] == "down" || w[i] == "clockwise") sign = -1;
-    }
-    for (size_t i = q.begin; i-- > 0 && q.begin - i <= 4 && sign == 0;) {
-      if (w[i] == "left" || w[i] == "up") sign = 1;
-      if (w[i] == "right" || w[i] == "down") sign = -1;
-    }
-    if (sign == 0) sign = 1;  // unsaid: counter-clockwise, the mathematical sense
-    if (pitch) v.pitch_deg = v.pitch_deg.value_or(0) + sign * q.value;
-    else v.yaw_deg = v.yaw_deg.value_or(0) + sign * q.value;
-  }
+  add_rotations(w, v);
   add_translations(w, v);
   // "turn the view around", "look behind": half a turn when no angle is given.
   if (!v.yaw_deg && text::has_any(w, {"turn around", "turn the view around", "turn the camera around", "look behind",

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "agents/motion/planner.hpp"
 #include "tests/support/synthetic_scene.hpp"
@@ -183,4 +184,25 @@ TEST(Planner, WithNoSpeedSaidItKeepsThePaceOfFasterTrafficBehind) {
     EXPECT_LT(slow.speed_mps, 6);
     EXPECT_FALSE(collides(slow, req.obstacles, {4.5, 1.9, 1.5}));
   }
+}
+
+// Blind layouts (tests/data/layouts): a T junction with slower traffic ahead, parking on the left.
+TEST(Planner, ATurnBehindSlowerTrafficStartsAheadOfItAndParkingFindsItsSide) {
+  const auto dir = std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts";
+  const auto tee = chatsim::scene::load_scene(dir / "blind-tee");
+  PlanRequest req;
+  req.intent = parse_motion("a taxi 20 m ahead turning right at the t junction");
+  req.type = "car";
+  req.obstacles = scene_obstacles(tee, {});
+  auto r = plan_motion(tee, req);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_LT(heading_change_deg(r.trajectory), -60);
+  EXPECT_FALSE(collides(r, req.obstacles, req.size_lwh));
+  // "in the parking lane" with no side said: the side the parking is on (the left here).
+  const auto bend = chatsim::scene::load_scene(dir / "blind-rightbend");
+  req.intent = parse_motion("a car parked in the parking lane");
+  req.obstacles = scene_obstacles(bend, {});
+  r = plan_motion(bend, req);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "parking_left");
 }

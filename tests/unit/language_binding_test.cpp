@@ -1,0 +1,70 @@
+// How words bind to what they modify: angles to their own direction word, prepositional phrases
+// to the phrase they sit in, verbs to the words right after them. Each test is a class of failure
+// a blind set showed, not one of its cases.
+#include <gtest/gtest.h>
+
+#include "agents/asset/asset_choice.hpp"
+#include "agents/deletion/deletion.hpp"
+#include "agents/manager/decompose.hpp"
+#include "agents/motion/motion_intent.hpp"
+#include "agents/view/view.hpp"
+
+using namespace chatsim::agents;
+
+TEST(LanguageBinding, EachAngleTakesTheAxisOfItsOwnDirectionWord) {
+  const auto both = view::parse_view("look 10 degrees to the right and 5 degrees up");
+  EXPECT_DOUBLE_EQ(*both.yaw_deg, -10);
+  EXPECT_DOUBLE_EQ(*both.pitch_deg, 5);
+  const auto listed = view::parse_view("pan left 20 degrees and tilt down 5 degrees");
+  EXPECT_DOUBLE_EQ(*listed.yaw_deg, 20);
+  EXPECT_DOUBLE_EQ(*listed.pitch_deg, -5);
+  EXPECT_DOUBLE_EQ(*view::parse_view("tilt the camera 10 degrees").pitch_deg, 10);  // the verb says the axis
+  EXPECT_FALSE(view::parse_view("tilt the camera 10 degrees").yaw_deg);
+}
+
+TEST(LanguageBinding, UpAndDownBeforeADeterminerSayWhereNotWhichWay) {
+  const auto street = view::parse_view("swing the camera 45 degrees left to look down the side street");
+  EXPECT_DOUBLE_EQ(*street.yaw_deg, 45);
+  EXPECT_FALSE(street.pitch_deg);
+  EXPECT_EQ(*view::parse_view("move the camera 10 m down the road").translation_m, (std::array<double, 3>{10, 0, 0}));
+  EXPECT_EQ(*view::parse_view("bring it down a metre").translation_m, (std::array<double, 3>{0, 0, -1}));
+}
+
+TEST(LanguageBinding, TheDeletionVerbIsTheFirstNotAnOfLaterOn) {
+  const auto d = deletion::parse_deletion("get rid of everything that's moving on my side of the road");
+  ASSERT_EQ(d.targets.size(), 1u);
+  EXPECT_EQ(d.targets[0].quantity, "all");
+  EXPECT_EQ(d.targets[0].road_side, "near");
+  EXPECT_TRUE(*d.targets[0].moving);
+}
+
+TEST(LanguageBinding, ANounAPrepositionGovernsIsNotWhatIsAdded) {
+  const auto faster = asset::parse_asset("add a white mercedes in the left lane going much faster than the traffic");
+  EXPECT_FALSE(faster.count);  // one car, not "traffic" (several)
+  EXPECT_EQ(*faster.brand, "mercedes");
+  EXPECT_EQ(asset::parse_asset("add a bus driving through the cars").type, "bus");
+  // Unless nothing else names it.
+  EXPECT_EQ(asset::parse_asset("turn it into a van").type, "van");
+  EXPECT_EQ(asset::parse_asset("block all three lanes with barriers").type, "barrier");
+}
+
+TEST(LanguageBinding, APlaceFilledWithVehiclesIsARowParkedThere) {
+  const auto in = manager::decompose("Make the parking on the left full of cars.");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "add");
+  EXPECT_EQ(asset::parse_asset(in[0].text).count, 4);
+  const auto m = motion::parse_motion(in[0].text);
+  EXPECT_EQ(m.lane, "parking");
+  EXPECT_EQ(m.action, "static");
+  // Traffic filling a side of the road is a busy road, not parked cars.
+  EXPECT_EQ(manager::decompose("Fill the far side with heavy traffic coming toward me.")[0].kind, "busy_road");
+}
+
+TEST(LanguageBinding, FilteringRidesTheLaneEdgeTheLanesWay) {
+  const auto m = motion::parse_motion("add a motorbike filtering between us and the oncoming traffic");
+  EXPECT_EQ(m.lane_edge, "inner");
+  EXPECT_NE(m.direction, "toward");  // what it filters beside is not where it goes
+  EXPECT_NE(m.lane, "oncoming");
+  EXPECT_EQ(m.action, "straight");
+  EXPECT_EQ(manager::decompose("add a motorbike lane splitting beside me")[0].kind, "add");
+}
