@@ -23,24 +23,6 @@ int lane_at(const scene::LaneMap& lanes, const Eigen::Vector2d& p, bool driving_
   return best;
 }
 
-// A lane whose legal travel ends beside another driving lane of the same way (2-5 m across),
-// not at a crossing: an on-ramp or a merging lane.
-bool merges(const scene::LaneMap& lanes, int index) {
-  const auto& l = lanes.lanes()[size_t(index)];
-  if (l.type != "driving") return false;
-  const double end_s = l.direction == scene::TrafficDirection::Backward ? 0.0 : l.length();
-  const Eigen::Vector2d end = lanes.point_at(index, end_s);
-  const double yaw = lanes.travel_yaw_at(index, end_s);
-  for (size_t i = 0; i < lanes.lanes().size(); ++i) {
-    if (int(i) == index || lanes.lanes()[i].type != "driving") continue;
-    const auto pos = lanes.project(int(i), end);
-    if (pos.s <= 1 || pos.s >= lanes.lanes()[i].length() - 1) continue;
-    if (std::abs(pos.lateral) < 2 || std::abs(pos.lateral) > 5) continue;
-    if (std::abs(wrap(lanes.travel_yaw_at(int(i), pos.s) - yaw)) < kPi / 8) return true;
-  }
-  return false;
-}
-
 // The half of the road a place off the driving lanes belongs to: that of the nearest driving lane
 // along it, when the road has lanes both ways.
 template <typename SameWay>
@@ -106,7 +88,7 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   }
   r.ego = own == ego_lane;
   r.near_side = true;
-  if (merges(lanes, own)) {  // not one of the road's own lanes
+  if (lanes.merges(own)) {  // not one of the road's own lanes
     r.ramp = true;
     return r;
   }

@@ -411,60 +411,6 @@ void Manager::do_remove_added(Conversation& c, const Instruction& in, Round& rou
   c.last_group.clear();
 }
 
-void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) {
-  static const char* kinds[] = {"car", "suv", "van", "car", "car", "suv", "car", "van", "car", "car"};
-  static const char* colors[] = {"white", "black", "silver", "red", "blue", "gray", "white", "green", "black", "yellow"};
-  int placed = 0, wanted = 0;
-  auto add = [&](const std::string& what, const json& intent) {
-    ++wanted;
-    const json asset_args{{"instruction", "add a " + what}};
-    if (add_one(c, asset_args, intent, in.text + " (" + what + ")", round, true)) ++placed;
-    else c.unresolved.erase(c.unresolved.end() - 1);  // one vehicle fewer is not a failure of the request
-  };
-  // What the user said about where and how ("coming the other way", "in the right lane") holds
-  // for every vehicle of the scene.
-  const auto decided = call("motion", c, "decide", {{"instruction", in.text}});
-  json said = decided.ok ? decided.result["intent"] : json::object();
-  // "traffic coming the other way": oncoming traffic comes toward the ego.
-  if (said.value("lane", "") == "oncoming" && !said.contains("direction")) said["direction"] = "toward";
-  // "roadworks on the left side": a scene placed ahead takes a side word as that side ahead.
-  if (said.value("placement", "") == "left" || said.value("placement", "") == "right")
-    said["placement"] = said["placement"].get<std::string>() + "_front";
-  const auto with_said = [&](json intent) {
-    for (const char* key : {"lane", "direction", "wrong_way", "placement"})
-      if (said.contains(key)) intent[key] = said[key];
-    return intent;
-  };
-  if (in.kind == "traffic_jam") {
-    for (int k = 0; k < 8; ++k)
-      add(std::string(colors[k]) + " " + kinds[k], with_said({{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}}));
-  } else if (in.kind == "busy_road") {
-    static const char* where[] = {"front", "left_front", "back", "front", "left_front", "back", "front", "left_front", "front", "back"};
-    for (int k = 0; k < 10; ++k)
-      add(std::string(colors[k]) + " " + kinds[k],
-          with_said({{"placement", where[k]}, {"direction", k % 2 ? "toward" : "away"}, {"action", "straight"}}));
-  } else if (in.kind == "road_block") {
-    // Two police cars stopped across the lanes ahead, barriers in front of them.
-    const double at = said.value("distance_m", 20.0);
-    for (const char* where : {"front", "left_front"})
-      add("police car", with_said({{"placement", where}, {"distance_m", at}, {"action", "static"}}));
-    for (int k = 0; k < 3; ++k)
-      add("road barrier", with_said({{"placement", k == 1 ? "left_front" : "front"}, {"distance_m", at - 5.0 - 2.5 * (k / 2)},
-                                     {"action", "static"}}));
-  } else {
-    const double first = said.value("distance_m", 14.0);
-    for (int k = 0; k < 6; ++k)
-      add(k < 4 ? "traffic cone" : "road barrier",
-          with_said({{"placement", "front"}, {"distance_m", first + 3.0 * k}, {"action", "static"}}));
-  }
-  if (placed == 0)
-    c.unresolved.push_back({{"instruction", in.text}, {"reason", "no free place on the lanes for any vehicle"}});
-  else if (placed < wanted)
-    c.notes.push_back(in.kind + ": placed " + std::to_string(placed) + " of " + std::to_string(wanted) +
-                      " vehicles; the rest had no free place");
-}
-
-
 json Manager::edit_state(const Conversation& c) const {
   const auto scene = cached_scene(c.scene_dir);
   json added = json::array();

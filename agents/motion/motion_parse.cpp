@@ -145,10 +145,24 @@ std::optional<std::string> blank_turn_targets(Words& w) {
   return side_said;
 }
 
+// "before the side street", "just past the junction": where along the road (ahead, by the
+// junction), not a lane. The words are blanked; true when some were.
+bool blank_junction_location(Words& w) {
+  bool found = false;
+  for (const char* where : {"before", "after", "past", "beyond", "short of", "ahead of", "in front of", "near"})
+    for (const char* street : {"the side street", "the side road", "the junction", "the crossing", "the cross street"}) {
+      const std::string p = std::string(where) + " " + street;
+      for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p), found = true)
+        for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
+    }
+  return found;
+}
+
 std::optional<std::string> find_lane(const Words& w_in) {
   // "the wrong side of the road" is how it drives (wrong_way), not the roadside.
   Words w = w_in;
-  for (const char* p : {"wrong side of the road", "wrong side", "wrong way"})
+  for (const char* p : {"wrong side of the road", "wrong side", "wrong way", "my side of the road", "our side of the road",
+                        "this side of the road", "my side", "our side"})
     for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p))
       for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
   if (has_any(w, {"my lane", "our lane", "same lane", "ego lane", "this lane", "current lane"})) return "ego";
@@ -158,6 +172,7 @@ std::optional<std::string> find_lane(const Words& w_in) {
     return "oncoming";
   if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane"}))
     return "cross";
+  if (has_any(w, {"on ramp", "slip road", "ramp", "merging lane", "acceleration lane", "entry lane"})) return "ramp";
   if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot",
                   "the parking", "parking bay", "parking area", "parking spaces", "parking spots", "parking strip"}))
     return "parking";
@@ -406,8 +421,11 @@ MotionIntent parse_motion(const std::string& instruction) {
   const auto change_to = lane_change_to(w);
   const bool turning = has_any(w, {"turn", "turns", "turning"});
   const auto target_side = blank_turn_targets(w);
+  const bool by_junction = !turning && blank_junction_location(w);
   m.lane = find_lane(w);
   if (!m.relative) m.placement = placement_without_lane_words(w, ahead_distance);
+  // By a junction ahead: on that side ahead, not level with the ego.
+  if (by_junction && (m.placement == "left" || m.placement == "right")) m.placement = *m.placement + "_front";
   // "in the right lane alongside me": level with the ego, on the lane's side.
   if (!m.relative && !ahead_distance && (!m.placement || m.placement == "front") &&
       has_any(w, {"alongside me", "alongside us", "beside me", "beside us", "next to me", "next to us", "level with me",

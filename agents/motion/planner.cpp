@@ -95,21 +95,21 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
 
 PlanResult Planner::run() {
   PlanResult best = run_once();
-  bool best_collided = collided_;
+  bool best_collided = collided_, best_missed = best.ok && lane_missed_;
   // Nothing free (or nothing at all, or not on the lane asked for) near the place asked for: look
   // twice as far around it; for a turn or lane change at a distance said, then further still (one
   // behind slower traffic fits in the clip only from ahead of it).
-  const bool missed_lane = best.ok && lane_missed_;
+  const bool manoeuvre = m_.action && (m_.action->rfind("turn_", 0) == 0 || m_.action->rfind("lane_change", 0) == 0);
   for (double widen : {2.0, 3.5}) {
-    const bool manoeuvre = m_.action && (m_.action->rfind("turn_", 0) == 0 || m_.action->rfind("lane_change", 0) == 0);
-    if (m_.relative || (best.ok && !best_collided && !missed_lane) || (widen > 2.0 && !(m_.distance_m && manoeuvre)))
+    if (m_.relative || (best.ok && !best_collided && !best_missed) || (widen > 2.0 && !(m_.distance_m && manoeuvre)))
       break;
     widen_ = widen;
     collided_ = false;
     PlanResult next = run_once();
-    // Better than what there is: clean, and on the lane asked for when what there is is clean.
+    // Better than what there is: clean, and on the lane asked for when what there is is clean
+    // (or always, for a scene of many vehicles: one off its lane spoils the scene).
     const bool best_clean = best.ok && !best_collided;
-    if (next.ok && !collided_ && !(best_clean && lane_missed_)) {
+    if (next.ok && !collided_ && !((best_clean || req_.strict) && lane_missed_)) {
       next.notes.push_back("nothing was free " + (m_.distance_m ? fmt(*m_.distance_m) + " m away" : "in the " +
                            describe_placement() + " region") + ", so it starts a little further round (" +
                            fmt(next.resolved.distance_m.value_or(0)) + " m away)");
@@ -118,12 +118,16 @@ PlanResult Planner::run() {
     if (!best.ok) {
       best = next;
       best_collided = collided_;
+      best_missed = next.ok && lane_missed_;
     }
   }
   // A path that meets another vehicle is no answer: say so instead of keeping it.
-  if (best.ok && best_collided) {
+  if (best.ok && (best_collided || (req_.strict && best_missed))) {
     PlanResult refused;
-    refused.reason = best.notes.back();
+    refused.reason = best_collided ? best.notes.back()
+                                   : "no start on the " + m_.lane.value_or(m_.lane_edge.value_or("")) +
+                                         " lane is free of the traffic there (its recorded vehicles would run into it;"
+                                         " remove them first to fill that lane)";
     return refused;
   }
   return best;
@@ -152,6 +156,16 @@ PlanResult Planner::run_once() {
   // clip, and a request nothing satisfies would otherwise try every lane metre (seconds).
   const size_t limit = std::min<size_t>(cands.size(), kMaxCandidates);
   for (size_t i = 0; i < limit; ++i) {
+    // Sorted by score, and a start costs at least its score: none from here beats the best
+    // imperfect one (the same answer the clean-start test below gives, without the evaluation).
+    if (best_imperfect && cost(*best_imperfect) <= cands[i].score) break;
+    // A start inside another vehicle meets it at once: no better than any colliding start found
+    // already (and no answer at all when strict), so not worth a path, car following and a
+    // collision check.
+    if ((best_colliding || req_.strict) && starts_inside_another(cands[i])) {
+      if (invalid_reason.empty()) invalid_reason = "every start that matches the request meets another vehicle";
+      continue;
+    }
     Evaluated e = evaluate(cands[i]);
     if (!e.valid) {
       if (invalid_reason.empty()) invalid_reason = e.invalid_reason;
@@ -193,6 +207,16 @@ PlanResult Planner::run_once() {
   }
   result.reason = invalid_reason.empty() ? "no start position fits the request" : invalid_reason;
   return result;
+}
+
+bool Planner::starts_inside_another(const Candidate& c) const {
+  const Eigen::Vector2d p = scene_.lanes.point_at(c.lane, c.s);
+  const Pose2 start{p.x(), p.y(), scene_.lanes.tangent_yaw_at(c.lane, c.s) + (c.dir > 0 ? 0 : kPi)};
+  // Overlapping by more than 0.3 m: the lane point is the start only up to the path's smoothing.
+  return std::any_of(req_.obstacles.begin(), req_.obstacles.end(), [&](const Obstacle& ob) {
+    return !ob.pedestrian && !ob.poses.empty() && ob.poses[0] &&
+           boxes_overlap(start, req_.size_lwh, *ob.poses[0], ob.size_lwh, 1.0, -0.3);
+  });
 }
 
 std::string Planner::fmt(double v) {

@@ -79,9 +79,15 @@ double Planner::lane_hint_penalty(int lane, double s) const {
   const double lat = lateral_of(lane);
   if (*m_.lane == "ego") return lane == ego_lane_ ? 0 : 60;
   if (*m_.lane == "parking") return l.type == "parking" ? 0 : 60;
+  if (*m_.lane == "ramp") return scene_.lanes.merges(lane) ? 0 : 60;
   if (*m_.lane == "oncoming") return l.type == "driving" && !same_way_as_ego(lane, s) ? std::abs(lat) * 0.5 : 60;
-  if (*m_.lane == "left") return l.type == "driving" && lat > 1.5 && lat < 5.5 ? 0 : 60;
-  if (*m_.lane == "right") return l.type == "driving" && lat < -1.5 && lat > -5.5 ? 0 : 60;
+  // "the right lane" where the ego drives in the rightmost lane: that lane (and so for the left).
+  if (*m_.lane == "left" || *m_.lane == "right") {
+    const int side = *m_.lane == "left" ? 1 : -1;
+    const bool beside = side * lat > 1.5 && side * lat < 5.5;
+    const bool outermost_own = std::abs(lat) <= 1.5 && same_way_as_ego(lane, s) && !same_way_lane_beside(lane, side);
+    return l.type == "driving" && (beside || outermost_own) ? 0 : 60;
+  }
   if (*m_.lane == "cross") {  // a lane across the ego's: a side or cross street
     if (l.type != "driving" || std::abs(std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw))) >= 0.5) return 60;
     // Turning out of a side street: its lane toward the road, not the one leading away from it.
@@ -277,6 +283,18 @@ std::vector<Candidate> Planner::relative_candidates() const {
     if (!ds) c.dir = -c.dir;
   }
   return out;
+}
+
+// Whether a driving lane of the ego's way runs one lane width to `side` (+1 left) of `lane`,
+// beside the ego.
+bool Planner::same_way_lane_beside(int lane, int side) const {
+  const auto pos = scene_.lanes.project(lane, ego_.p);
+  const Eigen::Vector2d left_normal(-std::sin(ego_.yaw), std::cos(ego_.yaw));
+  const Eigen::Vector2d q = scene_.lanes.point_at(lane, pos.s) + side * 3.5 * left_normal;
+  for (const auto& at : scene_.lanes.containing(q, 0.3))
+    if (at.lane != lane && scene_.lanes.lanes()[size_t(at.lane)].type == "driving" && same_way_as_ego(at.lane, at.s))
+      return true;
+  return false;
 }
 
 double Planner::lateral_of(int lane) const {  // signed ego-frame lateral offset of a lane near the ego

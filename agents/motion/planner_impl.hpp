@@ -84,6 +84,8 @@ class Planner {
 
  private:
   PlanResult run_once();
+  bool starts_inside_another(const Candidate& c) const;
+  bool same_way_lane_beside(int lane, int side) const;
   static std::string fmt(double v);
   bool nothing_said_about_motion() const;
   bool wants_parked(bool on_parking) const;

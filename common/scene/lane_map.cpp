@@ -203,4 +203,21 @@ std::vector<LaneCrossing> LaneMap::junctions(int index, double reach) const {
   return out;
 }
 
+bool LaneMap::merges(int index) const {
+  const auto& l = lanes_[size_t(index)];
+  if (l.type != "driving") return false;
+  const double end_s = l.direction == TrafficDirection::Backward ? 0.0 : l.length();
+  const Eigen::Vector2d end = point_at(index, end_s);
+  const double yaw = travel_yaw_at(index, end_s);
+  for (size_t i = 0; i < lanes_.size(); ++i) {
+    if (int(i) == index || lanes_[i].type != "driving") continue;
+    const auto pos = project(int(i), end);
+    if (pos.s <= 1 || pos.s >= lanes_[i].length() - 1) continue;
+    if (std::abs(pos.lateral) < 2 || std::abs(pos.lateral) > 5) continue;
+    if (std::abs(std::remainder(travel_yaw_at(int(i), pos.s) - yaw, 2 * std::numbers::pi)) < std::numbers::pi / 8)
+      return true;
+  }
+  return false;
+}
+
 }  // namespace chatsim::scene

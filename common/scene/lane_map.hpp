@@ -67,6 +67,9 @@ class LaneMap {
   // whose legal travel starts within `reach` of this lane's centreline, or this lane's travel
   // ending within `reach` of another lane. s_other is where the other lane is joined.
   std::vector<LaneCrossing> junctions(int lane, double reach) const;
+  // Whether a driving lane's legal travel ends beside another driving lane of the same way (2-5 m
+  // across), not at a crossing: an on-ramp or a merging lane.
+  bool merges(int lane) const;
 
  private:
   // p's position on lane i when p lies on it (within half its width plus margin, inside its extent).

@@ -68,3 +68,13 @@ TEST(LanguageBinding, FilteringRidesTheLaneEdgeTheLanesWay) {
   EXPECT_EQ(m.action, "straight");
   EXPECT_EQ(manager::decompose("add a motorbike lane splitting beside me")[0].kind, "add");
 }
+
+TEST(LanguageBinding, AJunctionNamedAsAPlaceAlongTheRoadIsNoLane) {
+  const auto m = motion::parse_motion("a red fire engine parked on the left-hand side just past the side street");
+  EXPECT_FALSE(m.lane);
+  EXPECT_EQ(m.placement, "left_front");  // by the junction ahead, not level with the ego
+  EXPECT_FALSE(motion::parse_motion("put a roadblock across the road before the side street").lane);
+  EXPECT_EQ(motion::parse_motion("a car coming out of the side street").lane, "cross");
+  EXPECT_EQ(motion::parse_motion("a jam on the on-ramp").lane, "ramp");
+  EXPECT_FALSE(motion::parse_motion("rush hour on my side of the road").lane);  // not the roadside
+}

@@ -206,3 +206,35 @@ TEST(Planner, ATurnBehindSlowerTrafficStartsAheadOfItAndParkingFindsItsSide) {
   ASSERT_TRUE(r.ok) << r.reason;
   EXPECT_EQ(r.lane, "parking_left");
 }
+
+// "The right lane" where the ego drives in the rightmost lane is that lane; "the on-ramp" is the
+// lane that merges; a scene of many vehicles refuses a start off the lane asked for.
+TEST(Planner, TheRightLaneTheRampAndStrictLanes) {
+  const auto dir = std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts";
+  const auto ramp = chatsim::scene::load_scene(dir / "blind-onramp");
+  PlanRequest req;
+  req.type = "car";  // no obstacles: the lane words alone decide
+  req.intent = parse_motion("a car in the right lane 10 m ahead");
+  auto r = plan_motion(ramp, req);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "east_right");
+  EXPECT_TRUE(r.notes.empty()) << r.notes.front();  // the lane asked for, not a stand-in
+  req.obstacles = scene_obstacles(ramp, {});
+  req.intent = parse_motion("a car on the on-ramp");
+  r = plan_motion(ramp, req);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "on_ramp");
+  // The one-way layout's left lane: its recorded traffic runs into anything slow put there.
+  const auto oneway = chatsim::scene::load_scene(dir / "blind-oneway");
+  req.obstacles = scene_obstacles(oneway, {});
+  req.intent = parse_motion("a car in the left lane driving slowly");
+  req.strict = true;
+  r = plan_motion(oneway, req);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.reason.find("left lane"), std::string::npos) << r.reason;
+  req.strict = false;
+  r = plan_motion(oneway, req);  // not strict: elsewhere, and said
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_NE(r.lane, "lane_left");
+  EXPECT_FALSE(r.notes.empty());
+}

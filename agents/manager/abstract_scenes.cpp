@@ -1,0 +1,83 @@
+// Abstract scenes (a jam, a busy road, a road block, roadworks): many vehicles placed by one
+// request, each strictly (no collision, on the lane asked for), fewer rather than wrong.
+#include <map>
+
+#include "agents/language/text.hpp"
+#include "agents/manager/manager.hpp"
+
+namespace chatsim::agents::manager {
+
+using nlohmann::json;
+
+void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) {
+  static const char* kinds[] = {"car", "suv", "van", "car", "car", "suv", "car", "van", "car", "car"};
+  static const char* colors[] = {"white", "black", "silver", "red", "blue", "gray", "white", "green", "black", "yellow"};
+  int placed = 0, wanted = 0;
+  std::map<std::string, int> failed;  // per place asked for
+  std::string first_reason;
+  auto add = [&](const std::string& what, const json& intent) {
+    // Twice no free place for the same request: that place is full, and each try costs a search.
+    if (failed[intent.dump()] >= 2) return;
+    ++wanted;
+    const json asset_args{{"instruction", "add a " + what}};
+    if (add_one(c, asset_args, intent, in.text + " (" + what + ")", round, true)) {
+      ++placed;
+      return;
+    }
+    ++failed[intent.dump()];
+    // One vehicle fewer is not a failure of the request; why the first did not fit is kept.
+    if (first_reason.empty()) first_reason = c.unresolved.back().value("reason", "");
+    c.unresolved.erase(c.unresolved.end() - 1);
+  };
+  // What the user said about where and how ("coming the other way", "in the right lane") holds
+  // for every vehicle of the scene.
+  const auto decided = call("motion", c, "decide", {{"instruction", in.text}});
+  json said = decided.ok ? decided.result["intent"] : json::object();
+  // "traffic coming the other way": oncoming traffic comes toward the ego.
+  if (said.value("lane", "") == "oncoming" && !said.contains("direction")) said["direction"] = "toward";
+  // "roadworks on the left side": a scene placed ahead takes a side word as that side ahead.
+  if (said.value("placement", "") == "left" || said.value("placement", "") == "right")
+    said["placement"] = said["placement"].get<std::string>() + "_front";
+  const auto with_said = [&](json intent) {
+    for (const char* key : {"lane", "direction", "wrong_way", "placement"})
+      if (said.contains(key)) intent[key] = said[key];
+    return intent;
+  };
+  if (in.kind == "traffic_jam") {
+    for (int k = 0; k < 8; ++k)
+      add(std::string(colors[k]) + " " + kinds[k], with_said({{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}}));
+  } else if (in.kind == "busy_road") {
+    static const char* where[] = {"front", "left_front", "back", "front", "left_front", "back", "front", "left_front", "front", "back"};
+    // "on my side of the road": all of it the ego's way (away ahead of it, toward it behind).
+    const bool my_side = text::has_any(text::words(in.text), {"my side", "our side", "my direction", "our direction"});
+    for (int k = 0; k < 10; ++k) {
+      const bool behind = std::string(where[k]) == "back";
+      add(std::string(colors[k]) + " " + kinds[k],
+          with_said({{"placement", where[k]},
+                     {"direction", my_side ? (behind ? "toward" : "away") : (k % 2 ? "toward" : "away")},
+                     {"action", "straight"}}));
+    }
+  } else if (in.kind == "road_block") {
+    // Two police cars stopped across the lanes ahead, barriers in front of them.
+    const double at = said.value("distance_m", 20.0);
+    for (const char* where : {"front", "left_front"})
+      add("police car", with_said({{"placement", where}, {"distance_m", at}, {"action", "static"}}));
+    for (int k = 0; k < 3; ++k)
+      add("road barrier", with_said({{"placement", k == 1 ? "left_front" : "front"}, {"distance_m", at - 5.0 - 2.5 * (k / 2)},
+                                     {"action", "static"}}));
+  } else {
+    const double first = said.value("distance_m", 14.0);
+    for (int k = 0; k < 6; ++k)
+      add(k < 4 ? "traffic cone" : "road barrier",
+          with_said({{"placement", "front"}, {"distance_m", first + 3.0 * k}, {"action", "static"}}));
+  }
+  if (placed == 0)
+    c.unresolved.push_back({{"instruction", in.text},
+                            {"reason", "no free place on the lanes for any vehicle" +
+                                           (first_reason.empty() ? std::string() : " (" + first_reason + ")")}});
+  else if (placed < wanted)
+    c.notes.push_back(in.kind + ": placed " + std::to_string(placed) + " of " + std::to_string(wanted) +
+                      " vehicles; the rest had no free place");
+}
+
+}  // namespace chatsim::agents::manager
