@@ -62,6 +62,10 @@ AssetRequest parse_asset(const std::string& instruction) {
   // Unless nothing else names what is added: "block the lanes with barriers", "turn it into a van".
   auto ungoverned = types;
   std::erase_if(ungoverned, [&](const lexicon::TypeMention& t) { return governed_by_preposition(w, t.begin); });
+  // "drive off into the traffic": traffic a preposition governs is never what it turns into.
+  std::erase_if(types, [&](const lexicon::TypeMention& t) {
+    return w[t.begin] == "traffic" && governed_by_preposition(w, t.begin);
+  });
   if (!ungoverned.empty() || !lexicon::find_brands(w).empty()) types = ungoverned;
   for (size_t k = 0; k < types.size(); ++k) {
     const auto& t = types[k];
@@ -86,6 +90,18 @@ AssetRequest parse_asset(const std::string& instruction) {
   if (!colors.empty()) {
     r.color = colors.front().name;
     r.color_rgb = colors.front().rgb;
+  }
+  if (types.empty() && !brands.empty()) {
+    // "two range rovers", "a pair of teslas": the count word before the make, else "some".
+    if (brands.front().plural) r.count = 3;
+    for (size_t i = brands.front().begin; i-- > 0 && brands.front().begin - i <= 3;) {
+      size_t used = 0;
+      const auto v = text::number_at(w, i, &used);
+      if (v && i + used <= brands.front().begin && *v >= 2 && std::floor(*v) == *v) {  // "a bmw" is one
+        r.count = int(*v);
+        break;
+      }
+    }
   }
   if (!types.empty()) {
     // "some cones", "cars": more than one, how many unsaid.
@@ -165,6 +181,12 @@ AssetChoice choose_asset(const AssetRequest& r, const std::optional<AssetChoice>
     if (!entry->brand.empty()) out.brand_words.push_back(entry->brand);
     out.size_lwh = entry->size_lwh;
     if (new_vehicle) out.color_rgb = entry->color_rgb;
+  }
+  // "landrover" is labelled "land rover" too: the name people write.
+  if (!out.brand_words.empty()) {
+    const std::string display = lexicon::make_display_name(out.brand_words.front());
+    if (std::find(out.brand_words.begin(), out.brand_words.end(), display) == out.brand_words.end())
+      out.brand_words.push_back(display);
   }
   // "a Vauxhall Corsa" is an Opel mesh, labelled with the name the user gave too.
   if (r.brand_name && std::find(out.brand_words.begin(), out.brand_words.end(), *r.brand_name) == out.brand_words.end())

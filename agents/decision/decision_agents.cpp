@@ -49,10 +49,11 @@ class ViewAgent : public DecisionAgent {
   using DecisionAgent::DecisionAgent;
   AgentOutcome run(const AgentCall& call) override {
     if (call.action == "adjust") {
-      const json change = decide(call.args.at("instruction").get<std::string>());
-      const auto state = view::apply(view::view_state_from_json(call.args.value("view", json::object())),
-                                     view::view_change_from_json(change));
-      return AgentOutcome::success({{"change", change}, {"view", view::to_json(state)}});
+      const json said = decide(call.args.at("instruction").get<std::string>());
+      auto change = view::view_change_from_json(said);
+      if (change.toward_kerb_m) change = view::resolve_road_sides(change, *cached_scene(call.scene));
+      const auto state = view::apply(view::view_state_from_json(call.args.value("view", json::object())), change);
+      return AgentOutcome::success({{"change", view::to_json(change)}, {"view", view::to_json(state)}});
     }
     if (call.action == "poses") {
       const auto scene = cached_scene(call.scene);

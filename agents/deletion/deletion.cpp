@@ -374,9 +374,11 @@ void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::ve
 // Of the matches, the kind the words say first: passenger cars for "car", tall ones for "SUV",
 // and the order asked ("the last", "the car behind me": the most nearly straight behind).
 void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
-  // "the white car", "both cars" mean passenger cars when any match, not the white bus ("all cars"
-  // is every vehicle: the dev cases' reading).
-  if (t.quantity != "all" && t.category == "vehicle" && t.noun.find("car") != std::string::npos) {
+  // "the white car", "both cars", "the cars parked on the left" mean passenger cars when any
+  // match, not the white bus; a bare "all cars" clears the road of every vehicle (the dev cases'
+  // reading).
+  const bool qualified = t.color || t.region || t.lane || t.road_side || t.moving || t.parked || t.approaching;
+  if ((t.quantity != "all" || qualified) && t.category == "vehicle" && t.noun.find("car") != std::string::npos) {
     std::vector<const Candidate*> cars;
     for (const auto* c : m)
       if (c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency"))

@@ -165,6 +165,15 @@ bool words_at(const std::vector<std::string>& w, size_t at, const std::vector<st
   return true;
 }
 
+// As words_at, or with the phrase's last word in the plural ("range rovers", "model ys").
+bool words_at_plural(const std::vector<std::string>& w, size_t at, const std::vector<std::string>& phrase) {
+  if (phrase.empty() || at + phrase.size() > w.size()) return false;
+  for (size_t k = 0; k + 1 < phrase.size(); ++k)
+    if (w[at + k] != phrase[k]) return false;
+  const std::string& last = w[at + phrase.size() - 1];
+  return last == phrase.back() + "s" || last == phrase.back() + "es";
+}
+
 bool is_unit_word(const std::string& w) {
   static const char* kUnits[] = {"m", "meter", "meters", "km", "km/h", "mph", "m/s", "degrees", "degree", "cm", "feet", "ft"};
   for (const char* u : kUnits)
@@ -173,10 +182,15 @@ bool is_unit_word(const std::string& w) {
 }
 
 // The model named right after a make ("x5", "model y", "mx 5"), not a number that is a distance.
-std::optional<std::pair<size_t, std::string>> model_after(const Make& make, const std::vector<std::string>& w, size_t at) {
-  for (const auto& [words, type] : make.models)
-    if (words_at(w, at, words) && !(at + words.size() < w.size() && is_unit_word(w[at + words.size()])))
-      return std::make_pair(words.size(), type);
+std::optional<std::pair<size_t, std::string>> model_after(const Make& make, const std::vector<std::string>& w, size_t at,
+                                                         bool* plural = nullptr) {
+  for (const auto& [words, type] : make.models) {
+    const bool exact = words_at(w, at, words);
+    if (!exact && !(plural != nullptr && words_at_plural(w, at, words))) continue;
+    if (at + words.size() < w.size() && is_unit_word(w[at + words.size()])) continue;
+    if (plural != nullptr) *plural = !exact;
+    return std::make_pair(words.size(), type);
+  }
   return std::nullopt;
 }
 
@@ -368,28 +382,45 @@ std::vector<BrandMention> find_brands(const std::vector<std::string>& w) {
   for (size_t at = 0; at < w.size(); ++at) {
     for (const auto& make : makes()) {
       size_t n = 0;
+      bool plural = false;
       const std::vector<std::string>* matched = nullptr;
       for (const auto& name : make.names)
         if (words_at(w, at, name) && name.size() > n) {
           n = name.size();
           matched = &name;
         }
+      // "two range rovers": a make's name in the plural, when nothing else matched.
+      if (n == 0)
+        for (const auto& name : make.names)
+          if (name.size() > 1 && words_at_plural(w, at, name)) {
+            n = name.size();
+            matched = &name;
+            plural = true;
+          }
       if (n == 0) continue;
       const bool ambiguous = std::find(make.ambiguous.begin(), make.ambiguous.end(), *matched) != make.ambiguous.end();
-      const auto model = model_after(make, w, at + n);
+      bool model_plural = false;
+      const auto model = plural ? std::nullopt : model_after(make, w, at + n, &model_plural);
+      plural = plural || model_plural;
       const bool noun_follows = at + n < w.size() && !find_types({w[at + n]}).empty();
       // A make that is also an ordinary word ("man", "seat") counts only before a model or a noun.
       if (ambiguous && !model && !noun_follows) continue;
       if (make.brand == "mini" && at + n < w.size() && (w[at + n] == "van" || w[at + n] == "bus")) continue;
       std::string said = text::join(*matched);
       if (said == make.brand || text::join(text::words(make.brand)) == said) said.clear();
-      BrandMention m{make.brand, said, model ? model->second : make.type, at, at + n + (model ? model->first : 0)};
+      BrandMention m{make.brand, said, model ? model->second : make.type, at, at + n + (model ? model->first : 0), plural};
       out.push_back(m);
       at = m.end - 1;
       break;
     }
   }
   return out;
+}
+
+std::string make_display_name(const std::string& brand) {
+  for (const auto& make : makes())
+    if (make.brand == brand && !make.names.empty()) return text::join(make.names.front());
+  return brand;
 }
 
 std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {

@@ -41,8 +41,11 @@ struct BrandMention {
   std::string name;      // as said when that is another name of the make ("cupra", "vauxhall"), else ""
   std::string type;      // its usual type: car, suv, truck
   size_t begin = 0, end = 0;
+  bool plural = false;   // "two range rovers", "teslas"
 };
 std::vector<BrandMention> find_brands(const std::vector<std::string>& words);
+// A make's name as people write it ("land rover" for the make "landrover"), or the make itself.
+std::string make_display_name(const std::string& brand);
 
 // Words that name something we cannot select or add (helicopter, plane, ...).
 std::optional<std::string> unsupported_noun(const std::vector<std::string>& words);

@@ -38,7 +38,7 @@ bool refers_to_added(const Words& w_in) {
     for (size_t at = text::find_phrase(w, p); at != std::string::npos; at = text::find_phrase(w, p))
       w.erase(w.begin() + long(at), w.begin() + long(at + text::words(p).size()));
   return has_any(w, {"it", "its", "them", "their", "both", "they", "added", "new", "you added", "i added", "we added",
-                     "inserted", "that car", "this car", "the one"});
+                     "inserted", "that car", "this car", "the one", "make that", "make this"});
 }
 
 // Clauses that are one thing as a whole: a restore, an abstract scene, "no parked cars", an empty
@@ -229,6 +229,7 @@ bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction
   if (vehicle && !starts_with(c, add_verbs()) &&
       has_any(c, {"gone", "removed", "deleted", "erased", "out of the way", "out of the picture", "out of the scene",
                   "out of the shot", "out of shot", "don't want", "dont want", "do not want", "don't need",
+                  "rather not have", "rather not see", "prefer not to have", "prefer not to see",
                   "do not need", "no longer want", "not want", "has to go", "have to go", "must go", "should go",
                   "needs to go", "can go", "got to go", "has got to go"})) {
     in.kind = added_ref ? "remove_added" : "delete";
@@ -287,6 +288,8 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
     return true;
   }
   if (!add_verb) return false;
+  // "put it behind the grey car", "place them on the left": what is there already is moved.
+  if (c.size() > 1 && (c[1] == "it" || c[1] == "them" || c[1] == "that" || c[1] == "this")) return false;
   // "add a flying saucer above the bus": what is to be added is no vehicle, whatever follows.
   const auto bad = lexicon::unsupported_noun(c);
   const auto types = lexicon::find_types(c);

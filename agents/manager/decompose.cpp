@@ -204,7 +204,8 @@ std::string reference_in(const std::string& clause) {
   if (w.size() > 1 && (w[1] == "it" || w[1] == "them") &&
       (w[0] == "make" || w[0] == "have" || w[0] == "let" || w[0] == "turn" || w[0] == "move" || w[0] == "park" ||
        w[0] == "change" || w[0] == "paint" || w[0] == "repaint" || w[0] == "respray" || w[0] == "recolor" ||
-       w[0] == "color" || w[0] == "set"))
+       w[0] == "color" || w[0] == "set" || w[0] == "put" || w[0] == "place" || w[0] == "position" || w[0] == "get" ||
+       w[0] == "bring" || w[0] == "send" || w[0] == "drop" || w[0] == "shift" || w[0] == "slow" || w[0] == "speed"))
     return w[1];
   if (text::has_any(w, {"both of them", "both", "all of them", "them", "they", "all the added", "all added", "each of them"}))
     return text::has_any(w, {"both"}) ? "both" : "them";

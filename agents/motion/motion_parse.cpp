@@ -336,6 +336,16 @@ std::optional<std::string> placement_without_lane_words(const Words& w, bool ahe
   return find_placement(without_lane, ahead_distance);
 }
 
+// "heading away", but not "70 m away" or "far away": those say how far, not which way.
+bool bare_away(const Words& w) {
+  for (size_t i = 0; i < w.size(); ++i)
+    if (w[i] == "away" && (i == 0 || !(w[i - 1] == "m" || w[i - 1] == "meters" || w[i - 1] == "meter" ||
+                                       w[i - 1] == "feet" || w[i - 1] == "ft" || w[i - 1] == "far" ||
+                                       w[i - 1] == "yards" || w[i - 1] == "further" || w[i - 1] == "farther")))
+      return true;
+  return false;
+}
+
 // Which way it goes relative to the ego, whether against the traffic, and overtaking.
 void find_direction(const Words& w, MotionIntent& m) {
   // Overtaking goes the ego's way, faster than it: from behind that is toward the ego's start,
@@ -346,14 +356,15 @@ void find_direction(const Words& w, MotionIntent& m) {
   }
   // "the same direction as me": the ego's way; ahead of the ego that is away from it.
   if (has_any(w, {"same direction as me", "same direction as us", "same way as me", "same way as us",
-                  "in the same direction", "the way i am going", "my way"}))
+                  "in the same direction", "the way i am going", "my way", "same direction", "same way",
+                  "going my way"}))
     m.direction = m.placement == "back" ? "toward" : "away";
   else if (has_any(w, {"toward me", "toward us", "toward the camera", "toward the ego", "coming at me", "coming at us",
                        "oncoming", "approaching", "head-on", "head on", "in my direction", "coming toward",
                        "heading toward", "driving toward", "comes toward", "racing toward", "rushing toward",
                        "speeding toward", "heading at me", "toward my car"}))
     m.direction = "toward";
-  else if (has_any(w, {"away from me", "away from us", "driving away", "moving away", "away", "leaving"}))
+  else if (has_any(w, {"away from me", "away from us", "driving away", "moving away", "leaving"}) || bare_away(w))
     m.direction = "away";
   // On the other side of the road, unless told otherwise, it comes toward the ego.
   else if (m.lane == "oncoming" && has_any(w, {"coming", "comes", "driving", "drives", "heading"}))

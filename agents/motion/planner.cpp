@@ -79,6 +79,9 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
     m_.speed = "static";
   }
   if (!m_.relative && !m_.placement) m_.placement = m_.lane == "parking" ? nearest_parking_side(scene) : "front";
+  // "on the right ... 70 m away": that far, a side is a side ahead, not level with the ego.
+  if ((m_.placement == "left" || m_.placement == "right") && m_.distance_m && *m_.distance_m > 15)
+    m_.placement = *m_.placement + "_front";
   // Overtaking from beside or ahead moves away from the ego's start; from behind it moves
   // toward it, which the lanes' own direction already gives.
   if (m_.overtake.value_or(false) && !m_.direction && m_.placement != "back") m_.direction = "away";

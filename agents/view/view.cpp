@@ -166,6 +166,12 @@ ViewChange parse_view(const std::string& instruction) {
   if (text::has_any(w, {"reset the view", "original view", "reset view", "reset the camera", "default view"})) v.reset = true;
   add_rotations(w, v);
   add_translations(w, v);
+  // The kerb's side is the road's to say: the sideways part said by it waits for the scene.
+  if (v.translation_m && (*v.translation_m)[1] != 0 &&
+      text::has_any(w, {"curb", "sidewalk", "pavement", "middle of the road", "center of the road", "center line"})) {
+    v.toward_kerb_m = -(*v.translation_m)[1];
+    (*v.translation_m)[1] = 0;
+  }
   // "turn the view around", "look behind": half a turn when no angle is given.
   if (!v.yaw_deg && text::has_any(w, {"turn around", "turn the view around", "turn the camera around", "look behind",
                                       "look back", "look backward", "look backwards", "face backward", "face backwards",
@@ -188,6 +194,7 @@ nlohmann::json to_json(const ViewChange& v) {
   if (v.yaw_deg) j["yaw_deg"] = *v.yaw_deg;
   if (v.pitch_deg) j["pitch_deg"] = *v.pitch_deg;
   if (v.ego_motion) j["ego_motion"] = *v.ego_motion;
+  if (v.toward_kerb_m) j["toward_kerb_m"] = *v.toward_kerb_m;
   if (v.reset) j["reset"] = true;
   return j;
 }
@@ -199,8 +206,37 @@ ViewChange view_change_from_json(const nlohmann::json& j) {
   if (j.contains("yaw_deg")) v.yaw_deg = j["yaw_deg"].get<double>();
   if (j.contains("pitch_deg")) v.pitch_deg = j["pitch_deg"].get<double>();
   if (j.contains("ego_motion")) v.ego_motion = j["ego_motion"].get<std::string>();
+  if (j.contains("toward_kerb_m")) v.toward_kerb_m = j["toward_kerb_m"].get<double>();
   v.reset = j.value("reset", false);
   return v;
+}
+
+bool keeps_left(const scene::Scene& scene) {
+  if (scene.frames.empty() || scene.lanes.empty()) return false;
+  const auto& pose = scene.frames.front().ego_to_world;
+  const Eigen::Vector2d ego = pose.translation().head<2>(), fwd = pose.linear().col(0).head<2>().normalized();
+  const Eigen::Vector2d left(-fwd.y(), fwd.x());
+  double nearest = 1e9, side = 1;
+  for (size_t i = 0; i < scene.lanes.lanes().size(); ++i) {
+    if (scene.lanes.lanes()[i].type != "driving") continue;
+    const auto at = scene.lanes.project(int(i), ego);
+    const double yaw = scene.lanes.travel_yaw_at(int(i), at.s);
+    if (Eigen::Vector2d(std::cos(yaw), std::sin(yaw)).dot(fwd) > -0.7) continue;  // not against the ego
+    const double lateral = (scene.lanes.point_at(int(i), at.s) - ego).dot(left);
+    if (std::abs(lateral) < nearest) {
+      nearest = std::abs(lateral);
+      side = lateral;
+    }
+  }
+  return nearest < 20 && side < 0;
+}
+
+ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene) {
+  if (!change.toward_kerb_m) return change;
+  if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
+  (*change.translation_m)[1] += (keeps_left(scene) ? 1 : -1) * *change.toward_kerb_m;
+  change.toward_kerb_m.reset();
+  return change;
 }
 
 ViewState apply(const ViewState& state, const ViewChange& c) {

@@ -19,9 +19,16 @@ struct ViewChange {
   std::optional<double> yaw_deg;                        // + turns left
   std::optional<double> pitch_deg;                      // + looks up
   std::optional<std::string> ego_motion;                // none, slow, fast
+  // "closer to the kerb" (+) or "toward the middle of the road" (-): sideways by the road's
+  // handedness, which only the scene knows (resolve_road_sides).
+  std::optional<double> toward_kerb_m;
   bool reset = false;
 };
 ViewChange parse_view(const std::string& instruction);
+// Whether traffic keeps left: the nearest lane running against the ego's lies on its right.
+bool keeps_left(const scene::Scene& scene);
+// toward_kerb_m turned into a sideways translation for the scene's handedness.
+ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene);
 nlohmann::json to_json(const ViewChange& v);
 ViewChange view_change_from_json(const nlohmann::json& j);
 

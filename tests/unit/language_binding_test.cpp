@@ -1,6 +1,9 @@
 // How words bind to what they modify: angles to their own direction word, prepositional phrases
 // to the phrase they sit in, verbs to the words right after them. Each test is a class of failure
 // a blind set showed, not one of its cases.
+#include <algorithm>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "agents/asset/asset_choice.hpp"
@@ -77,4 +80,36 @@ TEST(LanguageBinding, AJunctionNamedAsAPlaceAlongTheRoadIsNoLane) {
   EXPECT_EQ(motion::parse_motion("a car coming out of the side street").lane, "cross");
   EXPECT_EQ(motion::parse_motion("a jam on the on-ramp").lane, "ramp");
   EXPECT_FALSE(motion::parse_motion("rush hour on my side of the road").lane);  // not the roadside
+}
+
+TEST(LanguageBinding, TheKerbIsOnTheSideTheRoadsTrafficKeepsTo) {
+  const auto dir = std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts";
+  const auto change = view::parse_view("move the viewpoint one metre closer to the kerb");
+  EXPECT_DOUBLE_EQ(*change.toward_kerb_m, 1);
+  const auto left_hand = chatsim::scene::load_scene(dir / "blind-lefthand");
+  const auto right_hand = chatsim::scene::load_scene(dir / "blind-avenue");
+  EXPECT_TRUE(view::keeps_left(left_hand));
+  EXPECT_FALSE(view::keeps_left(right_hand));
+  EXPECT_EQ(*view::resolve_road_sides(change, left_hand).translation_m, (std::array<double, 3>{0, 1, 0}));
+  EXPECT_EQ(*view::resolve_road_sides(change, right_hand).translation_m, (std::array<double, 3>{0, -1, 0}));
+}
+
+TEST(LanguageBinding, WishesCorrectionsAndMovesOfWhatIsThere) {
+  EXPECT_EQ(manager::decompose("I'd rather not have the motorbike behind me.")[0].kind, "delete");
+  EXPECT_EQ(manager::decompose("Actually, make that 35 m.")[0].kind, "revise");
+  const auto put = manager::decompose("Put it behind the grey car instead.");
+  EXPECT_EQ(put[0].kind, "revise");
+  EXPECT_EQ(put[0].target, "it");  // the grey car is where, not what
+  // "70 m away" says how far, not which way.
+  EXPECT_FALSE(motion::parse_motion("move it further up the street about 70 m away").direction);
+  EXPECT_EQ(motion::parse_motion("a car 15 m behind us, same direction").direction, "toward");
+}
+
+TEST(LanguageBinding, MakesInThePluralAndQualifiedCars) {
+  const auto rovers = asset::parse_asset("put two black range rovers parked one behind the other on the left");
+  EXPECT_EQ(rovers.count, 2);
+  EXPECT_EQ(rovers.brand, "landrover");
+  const auto choice = asset::choose_asset(rovers);
+  EXPECT_NE(std::find(choice.brand_words.begin(), choice.brand_words.end(), "land rover"), choice.brand_words.end());
+  EXPECT_EQ(asset::parse_asset("add a red double-decker").type, "bus");
 }

@@ -436,7 +436,7 @@ TEST(Language, RowsScenesKerbsTallCarsAndPairs) {
   auto in = manager::decompose("Make it look like school's out: a row of parked cars on the left.");
   ASSERT_EQ(in.size(), 1u);
   EXPECT_EQ(in[0].kind, "add");
-  EXPECT_EQ(*view::parse_view("move the camera 2 m closer to the kerb").translation_m, (std::array<double, 3>{0, -2, 0}));
+  EXPECT_DOUBLE_EQ(*view::parse_view("move the camera 2 m closer to the kerb").toward_kerb_m, 2);
   auto d = deletion::parse_deletion("delete both cars parked at the kerb");
   EXPECT_EQ(d.targets[0].quantity, "n");
   EXPECT_EQ(d.targets[0].n, 2);
