@@ -116,6 +116,8 @@ AssetRequest parse_asset(const std::string& instruction) {
     const size_t at = types.front().begin;
     // "two traffic cones", "500 cars", "a couple of vans": the count word right before the noun phrase.
     for (size_t i = at; i-- > 0 && at - i <= 4;) {
+      // "a peugeot 308 estate": the model's number is no count.
+      if (!brands.empty() && i >= brands.front().begin && i < brands.front().end) continue;
       size_t used = 0;
       const auto v = text::number_at(w, i, &used);
       // "forward by 20 ... van": an amount after "by", "at" or "to" counts metres, not vans.

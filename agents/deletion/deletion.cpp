@@ -234,6 +234,11 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
                                           : (std::abs(along) < 6 && std::abs(side) > 1.5 && std::abs(side) < 7);
     if (ok) out.push_back(x);
   }
+  // "the bicycle and the car right behind it": in its stream of traffic, not a parked car beside
+  // it (and behind a parked car, the next one parked), when there is one.
+  const bool anchor_moves = anchor.speed > 0.5;
+  if (relation != "near" && std::any_of(out.begin(), out.end(), [&](const Candidate* x) { return (x->speed > 0.5) == anchor_moves; }))
+    std::erase_if(out, [&](const Candidate* x) { return (x->speed > 0.5) != anchor_moves; });
   std::sort(out.begin(), out.end(), [&](const Candidate* a, const Candidate* b) {
     return (a->pe - anchor.pe).norm() < (b->pe - anchor.pe).norm();
   });

@@ -15,7 +15,8 @@ const std::map<std::string, std::string>& spellings() {
       {"centimetres", "centimeters"}, {"centimetre", "centimeter"}, {"colour", "color"}, {"grey", "gray"},
       {"towards", "toward"}, {"kph", "km/h"}, {"kmh", "km/h"}, {"kmph", "km/h"}, {"mins", "minutes"},
       {"centre", "center"}, {"recolour", "recolor"}, {"kerb", "curb"}, {"kerbs", "curbs"}, {"lorry", "truck"},
-      {"lorries", "trucks"}, {"tyre", "tire"}};
+      {"lorries", "trucks"}, {"tyre", "tire"}, {"u", "you"}, {"pls", "please"}, {"plz", "please"},
+      {"fwd", "forward"}, {"thx", "thanks"}, {"bkwd", "backward"}};
   return m;
 }
 

@@ -83,7 +83,9 @@ bool classify_whole(const Words& c, Instruction& in) {
     return true;
   }
   if (has_any(c, {"stopping traffic", "stopping the traffic", "stop the traffic", "stop traffic", "halting traffic",
-                  "halt the traffic", "holding up traffic", "police stop", "police control"}) ||
+                  "halt the traffic", "holding up traffic", "police stop", "police control", "controlling traffic",
+                  "controlling the traffic", "directing traffic", "directing the traffic", "accident scene",
+                  "crash scene", "scene of an accident", "scene of a crash"}) ||
       has_any(c, {"road block", "roadblock", "road blockade", "checkpoint", "block the road", "block off the road",
                   "block the street", "block off the street", "barricade the road", "barricade the street",
                   "police barricade", "police cordon", "cordon off"})) {
@@ -226,7 +228,8 @@ bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction
   const std::string& first = c.front();
   // "I'd like the bus gone", "I want the red car removed", "I don't want the van in the shot": a
   // deletion said by its result.
-  if (vehicle && !starts_with(c, add_verbs()) &&
+  const bool everything = has_any(c, {"everything", "anything", "every vehicle", "all the vehicles", "all vehicles"});
+  if ((vehicle || everything) && !starts_with(c, add_verbs()) &&
       has_any(c, {"gone", "removed", "deleted", "erased", "out of the way", "out of the picture", "out of the scene",
                   "out of the shot", "out of shot", "don't want", "dont want", "do not want", "don't need",
                   "rather not have", "rather not see", "prefer not to have", "prefer not to see",

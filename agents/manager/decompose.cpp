@@ -69,6 +69,15 @@ bool names_new_part(const Words& w, size_t i) {
   return mentions_vehicle(Words(w.begin() + long(i), w.begin() + long(std::min(w.size(), i + 5))));
 }
 
+// "make it an estate, a volvo v70": after "make it / turn it into ...", a vehicle named after a
+// comma with no verb to its end says the same thing again.
+bool apposition(const Words& clause_so_far, const Words& w, size_t i) {
+  if (clause_so_far.size() < 3 || (clause_so_far[1] != "it" && clause_so_far[1] != "them")) return false;
+  const std::string& verb = clause_so_far[0];
+  if (verb != "make" && verb != "turn" && verb != "change" && verb != "swap" && verb != "switch") return false;
+  return std::none_of(w.begin() + long(i), w.end(), [](const std::string& x) { return starts_instruction(x); });
+}
+
 // Clauses: a sentence split before ", and VERB", "and VERB", ", VERB", "then VERB".
 std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before) {
   std::vector<Words> out(1);
@@ -85,7 +94,7 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
         split = true;
         i = j - 1;  // drop the connector words
       }
-    } else if (comma_before[i] && (starts_instruction(w[i]) || names_new_part(w, i))) {
+    } else if (comma_before[i] && (starts_instruction(w[i]) || (names_new_part(w, i) && !apposition(out.back(), w, i)))) {
       out.emplace_back();
     } else if (comma_before[i] && bare_plural_addition(w, i, out.back())) {
       out.emplace_back(Words{"add"});
@@ -102,6 +111,10 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
                                  "could we have", "can we have", "could we get", "can we get", "could i have",
                                  "can i have", "can i get", "could i get", "we need", "we want", "give me", "show me",
                                  "id like you to", "i'd like you to", "kindly", "lets", "let us", "go ahead and", "try to"};
+  // Fillers and politeness in any order ("hey, can you ...", "ok so please ..."), until none is left.
+  static const char* fillers[] = {"additionally", "also", "then", "now", "please", "and", "finally", "next", "first",
+                                  "lastly", "ok", "okay", "actually", "sorry", "wait", "oh", "hmm", "hey", "hi",
+                                  "hello", "so", "um", "uh", "well", "alright"};
   for (auto& c : out)
     for (bool again = true; again;) {
       again = false;
@@ -112,19 +125,13 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
           again = true;
         }
       }
-      if (!c.empty() && c.front() == "please") {
+      const bool filler = !c.empty() && std::any_of(std::begin(fillers), std::end(fillers),
+                                                    [&](const char* f) { return c.front() == f; });
+      if (filler || (!c.empty() && c.front() == "no" && !mentions_vehicle(c))) {
         c.erase(c.begin());
         again = true;
       }
     }
-  for (auto& c : out) {
-    while (!c.empty() && (c.front() == "additionally" || c.front() == "also" || c.front() == "then" || c.front() == "now" ||
-                          c.front() == "please" || c.front() == "and" || c.front() == "finally" || c.front() == "next" ||
-                          c.front() == "first" || c.front() == "lastly" || c.front() == "ok" || c.front() == "okay" ||
-                          c.front() == "actually" || c.front() == "sorry" || c.front() == "wait" || c.front() == "oh" ||
-                          c.front() == "hmm" || c.front() == "hey" || (c.front() == "no" && !mentions_vehicle(c))))
-      c.erase(c.begin());
-  }
   out.erase(std::remove_if(out.begin(), out.end(), [](const Words& c) { return c.empty(); }), out.end());
   return out;
 }

@@ -85,7 +85,10 @@ double Planner::lane_hint_penalty(int lane, double s) const {
   if (*m_.lane == "left" || *m_.lane == "right") {
     const int side = *m_.lane == "left" ? 1 : -1;
     const bool beside = side * lat > 1.5 && side * lat < 5.5;
-    const bool outermost_own = std::abs(lat) <= 1.5 && same_way_as_ego(lane, s) && !same_way_lane_beside(lane, side);
+    // Not "in the right lane alongside me": level with the ego, its own lane is not meant.
+    const bool level = m_.placement == "left" || m_.placement == "right";
+    const bool outermost_own =
+        !level && std::abs(lat) <= 1.5 && same_way_as_ego(lane, s) && !same_way_lane_beside(lane, side);
     return l.type == "driving" && (beside || outermost_own) ? 0 : 60;
   }
   if (*m_.lane == "cross") {  // a lane across the ego's: a side or cross street

@@ -113,3 +113,17 @@ TEST(LanguageBinding, MakesInThePluralAndQualifiedCars) {
   EXPECT_NE(std::find(choice.brand_words.begin(), choice.brand_words.end(), "land rover"), choice.brand_words.end());
   EXPECT_EQ(asset::parse_asset("add a red double-decker").type, "bus");
 }
+
+TEST(LanguageBinding, ChatShorthandAppositionsAndModelNumbers) {
+  const auto hey = manager::decompose("hey, can u delete the red truck pls");
+  ASSERT_EQ(hey.size(), 1u);
+  EXPECT_EQ(hey[0].kind, "delete");
+  EXPECT_EQ(*view::parse_view("camera 5m fwd").translation_m, (std::array<double, 3>{5, 0, 0}));
+  EXPECT_EQ(manager::decompose("Everything parked across the street has to go.")[0].kind, "delete");
+  // "make it an estate, a volvo v70": one revision, not a revision and a new car.
+  const auto estate = manager::decompose("Make it an estate, a Volvo V70.");
+  ASSERT_EQ(estate.size(), 1u);
+  EXPECT_EQ(estate[0].kind, "revise");
+  EXPECT_EQ(manager::decompose("Show an accident scene: police controlling the traffic ahead.")[0].kind, "road_block");
+  EXPECT_EQ(asset::parse_asset("add a peugeot 308 estate").count.value_or(1), 1);  // the model number is no count
+}
