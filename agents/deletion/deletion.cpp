@@ -236,9 +236,9 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
   }
   // "the bicycle and the car right behind it": in its stream of traffic, not a parked car beside
   // it (and behind a parked car, the next one parked), when there is one.
-  const bool anchor_moves = anchor.speed > 0.5;
-  if (relation != "near" && std::any_of(out.begin(), out.end(), [&](const Candidate* x) { return (x->speed > 0.5) == anchor_moves; }))
-    std::erase_if(out, [&](const Candidate* x) { return (x->speed > 0.5) != anchor_moves; });
+  const auto same_stream = [&](const Candidate* x) { return (x->speed > 0.5) == (anchor.speed > 0.5); };
+  if (relation != "near" && std::any_of(out.begin(), out.end(), same_stream))
+    std::erase_if(out, [&](const Candidate* x) { return !same_stream(x); });
   std::sort(out.begin(), out.end(), [&](const Candidate* a, const Candidate* b) {
     return (a->pe - anchor.pe).norm() < (b->pe - anchor.pe).norm();
   });
