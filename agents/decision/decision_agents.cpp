@@ -51,8 +51,10 @@ class ViewAgent : public DecisionAgent {
     if (call.action == "adjust") {
       const json said = decide(call.args.at("instruction").get<std::string>());
       auto change = view::view_change_from_json(said);
-      if (change.toward_kerb_m) change = view::resolve_road_sides(change, *cached_scene(call.scene));
-      const auto state = view::apply(view::view_state_from_json(call.args.value("view", json::object())), change);
+      const auto current = view::view_state_from_json(call.args.value("view", json::object()));
+      if (change.toward_kerb_m || change.to_lane)
+        change = view::resolve_road_sides(change, *cached_scene(call.scene), current.translation_m[1]);
+      const auto state = view::apply(current, change);
       return AgentOutcome::success({{"change", view::to_json(change)}, {"view", view::to_json(state)}});
     }
     if (call.action == "poses") {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
@@ -278,8 +279,43 @@ std::vector<Instruction> titled(const std::string& sentence, size_t colon) {
 
 }  // namespace
 
-std::vector<Instruction> decompose(const std::string& command) {
+// "add a green tram... sorry, a green bus", "a red car, no wait, a blue one": a self-correction
+// replaces the noun phrase before it with the one after it.
+std::string without_self_corrections(std::string command) {
+  static const char* kMarkers[] = {"no wait", "wait no", "no sorry", "sorry", "i mean", "or rather", "no, wait", "wait, no"};
+  const auto starts_phrase = [](const std::string& t, size_t at) {
+    for (const char* a : {"a ", "an ", "the ", "one ", "two ", "three "})
+      if (t.compare(at, std::strlen(a), a) == 0) return true;
+    return at < t.size() && std::isdigit(static_cast<unsigned char>(t[at]));
+  };
+  for (bool again = true; again;) {
+    again = false;
+    std::string lower = command;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+    for (const char* marker : kMarkers) {
+      const size_t at = lower.find(marker);
+      if (at == std::string::npos || at == 0) continue;
+      size_t next = at + std::strlen(marker);
+      while (next < lower.size() && (lower[next] == ' ' || lower[next] == ',' || lower[next] == '.')) ++next;
+      if (!starts_phrase(lower, next)) continue;
+      // The phrase corrected: from the last article within 60 characters before the marker.
+      const size_t from = at > 60 ? at - 60 : 0;
+      size_t cut = std::string::npos;
+      for (const char* a : {" a ", " an ", " the "})
+        if (const size_t p = lower.rfind(a, at); p != std::string::npos && p >= from && (cut == std::string::npos || p > cut))
+          cut = p + 1;
+      if (cut == std::string::npos) continue;
+      command.erase(cut, next - cut);
+      again = true;
+      break;
+    }
+  }
+  return command;
+}
+
+std::vector<Instruction> decompose(const std::string& command_in) {
   std::vector<Instruction> out;
+  const std::string command = without_self_corrections(command_in);
   for (const auto& sentence : sentences(command)) {
     if (const size_t colon = sentence.find(':'); colon != std::string::npos) {
       const auto parts = titled(sentence, colon);

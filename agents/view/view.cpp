@@ -166,6 +166,14 @@ ViewChange parse_view(const std::string& instruction) {
   if (text::has_any(w, {"reset the view", "original view", "reset view", "reset the camera", "default view"})) v.reset = true;
   add_rotations(w, v);
   add_translations(w, v);
+  // "over to the oncoming lane", "into the left lane": a lane of the map, found with the scene.
+  for (const auto& [phrase, lane] : {std::pair{"oncoming lane", "oncoming"}, std::pair{"opposite lane", "oncoming"},
+                                     std::pair{"other side of the road", "oncoming"}, std::pair{"left lane", "left"},
+                                     std::pair{"right lane", "right"}, std::pair{"parking lane", "parking"}})
+    if (const size_t at = text::find_phrase(w, phrase);
+        at != std::string::npos && at >= 2 && (w[at - 1] == "the" || w[at - 1] == "an") &&
+        (w[at - 2] == "to" || w[at - 2] == "into" || w[at - 2] == "in" || w[at - 2] == "onto"))
+      v.to_lane = lane;
   // The kerb's side is the road's to say: the sideways part said by it waits for the scene.
   if (v.translation_m && (*v.translation_m)[1] != 0 &&
       text::has_any(w, {"curb", "sidewalk", "pavement", "middle of the road", "center of the road", "center line"})) {
@@ -195,6 +203,7 @@ nlohmann::json to_json(const ViewChange& v) {
   if (v.pitch_deg) j["pitch_deg"] = *v.pitch_deg;
   if (v.ego_motion) j["ego_motion"] = *v.ego_motion;
   if (v.toward_kerb_m) j["toward_kerb_m"] = *v.toward_kerb_m;
+  if (v.to_lane) j["to_lane"] = *v.to_lane;
   if (v.reset) j["reset"] = true;
   return j;
 }
@@ -207,6 +216,7 @@ ViewChange view_change_from_json(const nlohmann::json& j) {
   if (j.contains("pitch_deg")) v.pitch_deg = j["pitch_deg"].get<double>();
   if (j.contains("ego_motion")) v.ego_motion = j["ego_motion"].get<std::string>();
   if (j.contains("toward_kerb_m")) v.toward_kerb_m = j["toward_kerb_m"].get<double>();
+  if (j.contains("to_lane")) v.to_lane = j["to_lane"].get<std::string>();
   v.reset = j.value("reset", false);
   return v;
 }
@@ -231,11 +241,45 @@ bool keeps_left(const scene::Scene& scene) {
   return nearest < 20 && side < 0;
 }
 
-ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene) {
-  if (!change.toward_kerb_m) return change;
-  if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
-  (*change.translation_m)[1] += (keeps_left(scene) ? 1 : -1) * *change.toward_kerb_m;
-  change.toward_kerb_m.reset();
+namespace {
+
+// The ego-frame sideways offset of the nearest lane of a kind beside the ego at frame 0.
+std::optional<double> lane_offset(const scene::Scene& scene, const std::string& kind) {
+  if (scene.frames.empty() || scene.lanes.empty()) return std::nullopt;
+  const auto& pose = scene.frames.front().ego_to_world;
+  const Eigen::Vector2d ego = pose.translation().head<2>(), fwd = pose.linear().col(0).head<2>().normalized();
+  const Eigen::Vector2d left(-fwd.y(), fwd.x());
+  std::optional<double> best;
+  for (size_t i = 0; i < scene.lanes.lanes().size(); ++i) {
+    const auto& lane = scene.lanes.lanes()[i];
+    const auto at = scene.lanes.project(int(i), ego);
+    const double yaw = scene.lanes.travel_yaw_at(int(i), at.s);
+    const double along = Eigen::Vector2d(std::cos(yaw), std::sin(yaw)).dot(fwd);
+    const double lateral = (scene.lanes.point_at(int(i), at.s) - ego).dot(left);
+    const bool fits = kind == "parking"    ? lane.type == "parking"
+                      : kind == "oncoming" ? lane.type == "driving" && along < -0.7
+                      : kind == "left"     ? lane.type == "driving" && along > 0.7 && lateral > 1.5
+                                           : lane.type == "driving" && along > 0.7 && lateral < -1.5;
+    if (fits && std::abs(lateral) < 20 && (!best || std::abs(lateral) < std::abs(*best))) best = lateral;
+  }
+  return best;
+}
+
+}  // namespace
+
+ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, double current_y_m) {
+  if (change.toward_kerb_m) {
+    if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
+    (*change.translation_m)[1] += (keeps_left(scene) ? 1 : -1) * *change.toward_kerb_m;
+    change.toward_kerb_m.reset();
+  }
+  if (change.to_lane) {
+    if (const auto target = lane_offset(scene, *change.to_lane)) {
+      if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
+      (*change.translation_m)[1] = *target - current_y_m;
+    }
+    change.to_lane.reset();
+  }
   return change;
 }
 

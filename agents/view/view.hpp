@@ -22,13 +22,18 @@ struct ViewChange {
   // "closer to the kerb" (+) or "toward the middle of the road" (-): sideways by the road's
   // handedness, which only the scene knows (resolve_road_sides).
   std::optional<double> toward_kerb_m;
+  // "move the camera over to the oncoming lane": left, right, oncoming or parking, a lane of the
+  // scene's map whose centre the view moves sideways to (resolve_road_sides).
+  std::optional<std::string> to_lane;
   bool reset = false;
 };
 ViewChange parse_view(const std::string& instruction);
 // Whether traffic keeps left: the nearest lane running against the ego's lies on its right.
 bool keeps_left(const scene::Scene& scene);
-// toward_kerb_m turned into a sideways translation for the scene's handedness.
-ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene);
+// toward_kerb_m and to_lane turned into a sideways translation for the scene's handedness and
+// lanes, from the view's current sideways offset current_y_m. A lane the map does not have
+// leaves the change without it (and so without a sideways move).
+ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, double current_y_m = 0);
 nlohmann::json to_json(const ViewChange& v);
 ViewChange view_change_from_json(const nlohmann::json& j);
 

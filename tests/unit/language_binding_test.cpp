@@ -127,3 +127,18 @@ TEST(LanguageBinding, ChatShorthandAppositionsAndModelNumbers) {
   EXPECT_EQ(manager::decompose("Show an accident scene: police controlling the traffic ahead.")[0].kind, "road_block");
   EXPECT_EQ(asset::parse_asset("add a peugeot 308 estate").count.value_or(1), 1);  // the model number is no count
 }
+
+TEST(LanguageBinding, SelfCorrectionsAndTheCameraToANamedLane) {
+  const auto corrected = manager::decompose("add a green tractor-trailer... no wait, a green truck, parked on the left");
+  ASSERT_EQ(corrected.size(), 1u);
+  EXPECT_EQ(corrected[0].kind, "add");
+  EXPECT_EQ(corrected[0].text.find("trailer"), std::string::npos) << corrected[0].text;
+  EXPECT_EQ(asset::parse_asset(manager::decompose("add a red car, I mean a blue van, 20 m ahead")[0].text).type, "van");
+  EXPECT_EQ(manager::decompose("Sorry, remove the bus")[0].kind, "delete");  // an apology corrects nothing
+  const auto avenue = chatsim::scene::load_scene(std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-avenue");
+  const auto over = view::parse_view("move the camera over to the oncoming lane");
+  EXPECT_EQ(over.to_lane, "oncoming");
+  EXPECT_EQ(*view::resolve_road_sides(over, avenue).translation_m, (std::array<double, 3>{0, 7, 0}));
+  // From a view already 2 m to the left, the move is what is left to go.
+  EXPECT_DOUBLE_EQ((*view::resolve_road_sides(over, avenue, 2.0).translation_m)[1], 5.0);
+}
