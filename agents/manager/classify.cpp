@@ -240,6 +240,15 @@ bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction
     in.text = "remove " + in.text;
     return true;
   }
+  // "what would it look like without the red bus?", "show me the street without the parked cars":
+  // what it should be without is to be removed.
+  if (const size_t at = text::find_phrase(c, "without"); vehicle && !starts_with(c, add_verbs()) &&
+      at != std::string::npos && at + 2 < c.size() &&
+      (c[at + 1] == "the" || c[at + 1] == "that" || c[at + 1] == "those" || c[at + 1] == "any" || c[at + 1] == "all")) {
+    in.kind = "delete";
+    in.text = "remove " + text::join(c, at + 1);
+    return true;
+  }
   // "get it to drive off" is a revision; "get rid of it", "get the bus out of here" a deletion.
   const bool causative_get = first == "get" && !has_any(c, {"get rid", "out", "away", "off the road", "gone"});
   // "take the camera 5 m back": a view moved with a verb that otherwise deletes.

@@ -189,6 +189,7 @@ void Manager::do_restore(Conversation& c, const Instruction& in, Round& round) {
     return;
   }
   const auto w = text::words(in.text);
+  if (restore_described(c, w, round)) return;
   const bool all = text::has_any(w, {"all", "every", "everything", "them"});
   // "put both back": removals from the last, until two objects are back.
   const bool both = text::has_any(w, {"both"});
@@ -200,6 +201,33 @@ void Manager::do_restore(Conversation& c, const Instruction& in, Round& round) {
   }
   for (const auto& id : back) c.removed.erase(std::remove(c.removed.begin(), c.removed.end(), id), c.removed.end());
   round.done.push_back("Put back " + std::to_string(back.size()) + " object(s).");
+}
+
+// "bring back the black one", "put the bus back": of the removed objects, those the words
+// describe. False when the words describe none (the last removal comes back instead).
+bool Manager::restore_described(Conversation& c, const std::vector<std::string>& w, Round& round) {
+  std::vector<std::string> description;
+  for (const auto& x : w)
+    if (x != "bring" && x != "put" && x != "back" && x != "restore" && x != "please" && x != "again" && x != "undelete")
+      description.push_back(x);
+  const bool describes = !lexicon::find_types(description).empty() || !lexicon::find_colors(description).empty();
+  if (!describes) return false;
+  // Selected among every object (the removed ones are the point), then kept if removed.
+  const auto out = call("deletion", c, "select", {{"instruction", "remove " + text::join(description)},
+                                                  {"removed", json::array()}});
+  std::vector<std::string> back;
+  for (const auto& o : out.ok ? out.result.value("objects", json::array()) : json::array()) {
+    const auto id = o.value("id", std::string());
+    if (std::find(c.removed.begin(), c.removed.end(), id) != c.removed.end()) back.push_back(id);
+  }
+  if (back.empty()) return false;
+  for (const auto& id : back) {
+    c.removed.erase(std::remove(c.removed.begin(), c.removed.end(), id), c.removed.end());
+    for (auto& batch : c.removal_batches) batch.erase(std::remove(batch.begin(), batch.end(), id), batch.end());
+  }
+  std::erase_if(c.removal_batches, [](const std::vector<std::string>& b) { return b.empty(); });
+  round.done.push_back("Put back " + std::to_string(back.size()) + " object(s).");
+  return true;
 }
 
 json Manager::others_json(const Conversation& c, int except) const {

@@ -72,6 +72,7 @@ class Manager {
   void run_instruction(Conversation& c, const Instruction& in, Round& round);
   void do_view(Conversation& c, const Instruction& in, Round& round);
   void do_delete(Conversation& c, const Instruction& in, Round& round);
+  bool restore_described(Conversation& c, const std::vector<std::string>& words, Round& round);
   void do_restore(Conversation& c, const Instruction& in, Round& round);
   void do_add(Conversation& c, const Instruction& in, Round& round);
   void do_revise(Conversation& c, const Instruction& in, Round& round);

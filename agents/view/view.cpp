@@ -180,6 +180,13 @@ ViewChange parse_view(const std::string& instruction) {
     v.toward_kerb_m = -(*v.translation_m)[1];
     (*v.translation_m)[1] = 0;
   }
+  // "turn the camera to face left", "look right": a quarter turn when no angle is given.
+  if (!v.yaw_deg && !v.translation_m) {
+    for (const auto& [side, yaw] : {std::pair{"left", 90.0}, std::pair{"right", -90.0}})
+      for (const char* verb : {"face", "facing", "look", "looking", "point", "pointing"})
+        for (const char* link : {" ", " to the ", " the "})
+          if (text::has_any(w, {std::string(verb) + link + side})) v.yaw_deg = yaw;
+  }
   // "turn the view around", "look behind": half a turn when no angle is given.
   if (!v.yaw_deg && text::has_any(w, {"turn around", "turn the view around", "turn the camera around", "look behind",
                                       "look back", "look backward", "look backwards", "face backward", "face backwards",

@@ -142,3 +142,13 @@ TEST(LanguageBinding, SelfCorrectionsAndTheCameraToANamedLane) {
   // From a view already 2 m to the left, the move is what is left to go.
   EXPECT_DOUBLE_EQ((*view::resolve_road_sides(over, avenue, 2.0).translation_m)[1], 5.0);
 }
+
+TEST(LanguageBinding, QuestionsWithoutSomethingAndQuarterTurnsByName) {
+  const auto without = manager::decompose("What would it look like without the red bus?");
+  ASSERT_EQ(without.size(), 1u);
+  EXPECT_EQ(without[0].kind, "delete");
+  EXPECT_EQ(deletion::parse_deletion(without[0].text).targets[0].color, "red");
+  EXPECT_DOUBLE_EQ(*view::parse_view("turn the camera to face left").yaw_deg, 90);
+  EXPECT_DOUBLE_EQ(*view::parse_view("look right").yaw_deg, -90);
+  EXPECT_FALSE(view::parse_view("move the camera 2 m to the left").yaw_deg);  // a move, not a turn
+}
