@@ -279,6 +279,8 @@ std::vector<Instruction> titled(const std::string& sentence, size_t colon) {
 
 }  // namespace
 
+namespace {
+
 // "add a green tram... sorry, a green bus", "a red car, no wait, a blue one": a self-correction
 // replaces the noun phrase before it with the one after it.
 std::string without_self_corrections(std::string command) {
@@ -312,6 +314,8 @@ std::string without_self_corrections(std::string command) {
   }
   return command;
 }
+
+}  // namespace
 
 std::vector<Instruction> decompose(const std::string& command_in) {
   std::vector<Instruction> out;

@@ -228,26 +228,6 @@ ViewChange view_change_from_json(const nlohmann::json& j) {
   return v;
 }
 
-bool keeps_left(const scene::Scene& scene) {
-  if (scene.frames.empty() || scene.lanes.empty()) return false;
-  const auto& pose = scene.frames.front().ego_to_world;
-  const Eigen::Vector2d ego = pose.translation().head<2>(), fwd = pose.linear().col(0).head<2>().normalized();
-  const Eigen::Vector2d left(-fwd.y(), fwd.x());
-  double nearest = 1e9, side = 1;
-  for (size_t i = 0; i < scene.lanes.lanes().size(); ++i) {
-    if (scene.lanes.lanes()[i].type != "driving") continue;
-    const auto at = scene.lanes.project(int(i), ego);
-    const double yaw = scene.lanes.travel_yaw_at(int(i), at.s);
-    if (Eigen::Vector2d(std::cos(yaw), std::sin(yaw)).dot(fwd) > -0.7) continue;  // not against the ego
-    const double lateral = (scene.lanes.point_at(int(i), at.s) - ego).dot(left);
-    if (std::abs(lateral) < nearest) {
-      nearest = std::abs(lateral);
-      side = lateral;
-    }
-  }
-  return nearest < 20 && side < 0;
-}
-
 namespace {
 
 // The ego-frame sideways offset of the nearest lane of a kind beside the ego at frame 0.
@@ -273,6 +253,11 @@ std::optional<double> lane_offset(const scene::Scene& scene, const std::string& 
 }
 
 }  // namespace
+
+bool keeps_left(const scene::Scene& scene) {
+  const auto oncoming = lane_offset(scene, "oncoming");
+  return oncoming && *oncoming < 0;
+}
 
 ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, double current_y_m) {
   if (change.toward_kerb_m) {
