@@ -18,6 +18,12 @@ using Words = std::vector<std::string>;
 std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
   std::vector<Words> out(1);
   for (size_t i = begin; i < end; ++i) {
+    // "the car heading the same way as it": "as it" ends the phrase's relation, no new phrase.
+    if (w[i] == "as" && i > begin && (w[i - 1] == "way" || w[i - 1] == "direction") && i + 1 < end &&
+        (w[i + 1] == "it" || w[i + 1] == "that" || w[i + 1] == "them")) {
+      ++i;
+      continue;
+    }
     if (w[i] == "and" || w[i] == "or" || w[i] == "plus" || w[i] == "as") {
       if (!out.back().empty()) out.emplace_back();
       continue;
@@ -188,6 +194,7 @@ Selector parse_phrase(const Words& p, const Selector* previous) {
     if (text::has_any(p, {"behind it", "behind that one", "after it"})) s.of_previous = "behind";
     else if (text::has_any(p, {"in front of it", "ahead of it"})) s.of_previous = "front";
     else if (text::has_any(p, {"next to it", "beside it", "alongside it"})) s.of_previous = "beside";
+    else if (text::has_any(p, {"same way", "same direction"})) s.of_previous = "same_way";
   }
   if (text::has_any(p, {"following me", "following us", "tailing me", "tailing us", "tailgating me", "tailgating us",
                         "on my tail", "on our tail", "right behind me", "right behind us"})) {
@@ -228,7 +235,8 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
     const Eigen::Vector2d d = x->pe - anchor.pe;
     const double along = c * d.x() + s * d.y(), side = -s * d.x() + c * d.y();
     const double lane_room = 3 + 0.2 * std::abs(along);  // a road may bend between them
-    const bool ok = relation == "behind" ? (along < -1 && std::abs(side) < lane_room)
+    const bool ok = relation == "same_way" ? std::cos(x->yaw - anchor.yaw) > 0.7 && x->speed > 0.5
+                    : relation == "behind" ? (along < -1 && std::abs(side) < lane_room)
                     : relation == "front" ? (along > 1 && std::abs(side) < lane_room)
                     : relation == "near"  ? true
                                           : (std::abs(along) < 6 && std::abs(side) > 1.5 && std::abs(side) < 7);
@@ -237,7 +245,7 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
   // "the bicycle and the car right behind it": in its stream of traffic, not a parked car beside
   // it (and behind a parked car, the next one parked), when there is one.
   const auto same_stream = [&](const Candidate* x) { return (x->speed > 0.5) == (anchor.speed > 0.5); };
-  if (relation != "near" && std::any_of(out.begin(), out.end(), same_stream))
+  if (relation != "near" && relation != "same_way" && std::any_of(out.begin(), out.end(), same_stream))
     std::erase_if(out, [&](const Candidate* x) { return !same_stream(x); });
   std::sort(out.begin(), out.end(), [&](const Candidate* a, const Candidate* b) {
     return (a->pe - anchor.pe).norm() < (b->pe - anchor.pe).norm();

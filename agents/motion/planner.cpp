@@ -73,6 +73,13 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
   ego_ = ego_frame(scene);
   for (const auto& f : scene.frames) times_.push_back(f.timestamp_s - scene.frames.front().timestamp_s);
   if (times_.empty()) times_.push_back(0);
+  // "keeping pace with me": the ego's mean speed along its recorded path (which may bend).
+  for (size_t f = 1; f < scene.frames.size(); ++f) {
+    const auto& a = scene.frames[f - 1].ego_to_world.translation();
+    const auto& b = scene.frames[f].ego_to_world.translation();
+    ego_speed_ += (b - a).head<2>().norm();
+  }
+  if (times_.back() > 0) ego_speed_ /= times_.back();
   movable_ = req.type != "cone" && req.type != "barrier";
   if (!movable_) {
     m_.action = "static";

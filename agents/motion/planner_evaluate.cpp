@@ -16,6 +16,7 @@ double Planner::desired_speed(bool parked) const {
   // In a removed vehicle's place with no motion said: it moves as that vehicle did.
   if (m_.relative && m_.relative->region == "at" && req_.anchor && !m_.speed && !m_.action) return req_.anchor->speed_mps;
   if (m_.action == "backward") return word == "fast" ? 5.0 : word == "slow" ? 2.0 : 3.0;
+  if (word == "ego") return ego_speed_;
   return speed_for(word);
 }
 

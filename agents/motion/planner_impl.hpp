@@ -136,6 +136,7 @@ class Planner {
   double widen_ = 1.0;     // distance tolerance factor (see run)
   bool collided_ = false;  // the last run_once accepted a collision
   mutable bool lane_missed_ = false;  // the last run_once's start is not on the lane asked for
+  double ego_speed_ = 0;              // the ego's mean recorded speed over the clip, m/s
 };
 
 }  // namespace chatsim::agents::motion::detail

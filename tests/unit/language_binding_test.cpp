@@ -10,6 +10,7 @@
 #include "agents/deletion/deletion.hpp"
 #include "agents/manager/decompose.hpp"
 #include "agents/motion/motion_intent.hpp"
+#include "agents/motion/planner.hpp"
 #include "agents/view/view.hpp"
 
 using namespace chatsim::agents;
@@ -151,4 +152,26 @@ TEST(LanguageBinding, QuestionsWithoutSomethingAndQuarterTurnsByName) {
   EXPECT_DOUBLE_EQ(*view::parse_view("turn the camera to face left").yaw_deg, 90);
   EXPECT_DOUBLE_EQ(*view::parse_view("look right").yaw_deg, -90);
   EXPECT_FALSE(view::parse_view("move the camera 2 m to the left").yaw_deg);  // a move, not a turn
+}
+
+TEST(LanguageBinding, KeepingPaceWithTheEgoIsTheEgosSpeed) {
+  EXPECT_EQ(motion::parse_motion("a white car in the left lane keeping pace with me").speed, "ego");
+  EXPECT_EQ(motion::parse_motion("a van beside us at the same speed as us").speed, "ego");
+  auto s = chatsim::scene::load_scene(std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-avenue");
+  for (auto& f : s.frames) f.ego_to_world.translation().x() = 11.0 * f.timestamp_s;  // the ego at 11 m/s
+  motion::PlanRequest req;
+  req.intent = motion::parse_motion("a car in the left lane keeping pace with me");
+  const auto r = motion::plan_motion(s, req);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_NEAR(r.speed_mps, 11.0, 0.1);
+}
+
+TEST(LanguageBinding, TheCarHeadingTheSameWayAsIt) {
+  const auto d = deletion::parse_deletion("remove the oncoming bus and the car heading the same way as it");
+  ASSERT_EQ(d.targets.size(), 2u);  // "as it" ends the relation, it is no third thing
+  EXPECT_FALSE(d.unsupported);
+  EXPECT_EQ(d.targets[1].of_previous, "same_way");
+  const auto avenue = chatsim::scene::load_scene(std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-avenue");
+  const auto chosen = deletion::select_objects(avenue, d, {});
+  EXPECT_EQ(chosen.ids, (std::vector<std::string>{"obj_6", "obj_7"}));  // the westbound car and bus
 }
