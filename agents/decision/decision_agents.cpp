@@ -142,6 +142,8 @@ class MotionAgent : public DecisionAgent {
     req.size_lwh = {size[0], size[1], size[2]};
     req.type = a.value("type", "car");
     req.strict = a.value("strict", false);
+    // "the ego drives slowly" then "a truck ahead at the same speed": the speed the view gives it.
+    if (const auto ego = a.value("ego_motion", std::string("none")); ego != "none") req.ego_speed_mps = view::ego_speed_mps(ego);
     req.obstacles = motion::scene_obstacles(*scene, a.value("removed", std::vector<std::string>{}));
     for (const auto& o : a.value("others", json::array())) {
       std::vector<motion::Pose2> traj;

@@ -239,7 +239,9 @@ json Manager::others_json(const Conversation& c, int except) const {
   return others;
 }
 
-bool Manager::plan_motion(Conversation& c, AddedVehicle& v, const json& args, const std::string& text) {
+bool Manager::plan_motion(Conversation& c, AddedVehicle& v, const json& args_in, const std::string& text) {
+  json args = args_in;
+  if (c.view.is_object()) args["ego_motion"] = c.view.value("ego_motion", "none");  // "at the same speed as me"
   const auto plan = call("motion", c, "plan", args);
   if (!plan.ok) {
     // A plan that cannot be made is an answer; an agent that failed is not.

@@ -266,10 +266,12 @@ void find_speed(const Words& w, MotionIntent& m) {
     m.speed_mps = q.value;
     return;
   }
-  // "at the same speed as me", "keeping pace with us": the ego's own recorded speed.
+  // "at the same speed as me", "keeping pace with us": the ego's own speed; "at the same speed"
+  // with nothing else to match is the ego's too.
   if (has_any(w, {"same speed as me", "same speed as us", "same speed as the ego", "keeping pace with me",
                   "keeping pace with us", "keeps pace with me", "keep pace with me", "as fast as me", "as fast as us",
-                  "at my speed", "at our speed", "matching my speed", "matching our speed", "match my speed"}))
+                  "at my speed", "at our speed", "matching my speed", "matching our speed", "match my speed"}) ||
+      (!m.relative && has_any(w, {"at the same speed", "the same speed"})))
     m.speed = "ego";
   else if (has_any(w, {"faster", "speed up", "speeds up", "quicker", "accelerate", "more quickly"})) m.speed = "faster";
   else if (has_any(w, {"slower", "slow down", "slows down", "more slowly", "decelerate"})) m.speed = "slower";

@@ -80,6 +80,7 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
     ego_speed_ += (b - a).head<2>().norm();
   }
   if (times_.back() > 0) ego_speed_ /= times_.back();
+  if (req.ego_speed_mps) ego_speed_ = *req.ego_speed_mps;
   movable_ = req.type != "cone" && req.type != "barrier";
   if (!movable_) {
     m_.action = "static";

@@ -39,6 +39,7 @@ struct PlanRequest {
   std::vector<Obstacle> obstacles;
   std::optional<Anchor> anchor;       // required when intent.relative is set
   bool strict = false;                // fail rather than accept a collision
+  std::optional<double> ego_speed_mps;  // the ego's speed when a view change sets it, else recorded
 };
 
 struct PlanResult {

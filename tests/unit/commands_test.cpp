@@ -253,3 +253,14 @@ TEST(Commands, PutBackWhatTheWordsDescribe) {
   s = manager.chat("c", dir, "Put them back.").edit_state;  // nothing described: the rest of that removal
   EXPECT_TRUE(s["removed"].empty());
 }
+
+// "The ego drives slowly", then "a truck ahead at the same speed": the speed the view gives the ego.
+TEST(Commands, TheSameSpeedAsTheEgoFollowsTheViewsEgoMotion) {
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  const auto dir = (fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-oneway").string();
+  manager.chat("c", dir, "The ego car should drive slowly.");
+  const auto s = manager.chat("c", dir, "Add a truck ahead of me driving at the same speed.").edit_state;
+  ASSERT_EQ(s["added"].size(), 1u);
+  EXPECT_NEAR(s["added"][0]["intent"]["speed_mps"].get<double>(), 3.0, 0.01);  // view::ego_speed_mps("slow")
+}
