@@ -181,7 +181,9 @@ std::optional<int> Planner::pull_out_side(const Candidate& c) const {
 void Planner::try_overtake(const Candidate& c, Evaluated& e, std::string& action) const {
   static const char* kLaneWords[] = {"ego", "left", "right", "oncoming", "parking", "cross"};
   const bool lane_asked = m_.lane && std::find(std::begin(kLaneWords), std::end(kLaneWords), *m_.lane) != std::end(kLaneWords);
-  if (!(m_.speed || m_.speed_mps) || lane_asked || (m_.action && *m_.action != "straight")) return;
+  // A speed asked for ("fast", "80 km/h"), not "normally" or "slowly": those follow.
+  const bool speed_asked = m_.speed_mps || m_.speed == "fast" || m_.speed == "faster";
+  if (!speed_asked || lane_asked || (m_.action && *m_.action != "straight")) return;
   const double total = e.speed * (times_.back() + 1) + 20;
   for (int sign : {1, -1}) {
     // Out at once and briskly: the slower car ahead is what it is passing.
