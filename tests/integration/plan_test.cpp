@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -68,4 +69,33 @@ TEST(Plan, SceneInfoSummarises) {
   const auto text = test_support::read_file(log);
   EXPECT_NE(text.find("frames: 100"), std::string::npos) << text;
   EXPECT_NE(text.find("vehicle.car: 6"), std::string::npos) << text;
+}
+
+// eval commands reports each category's slowest round and every round over #41's targets.
+TEST(Plan, EvalCommandsReportsTheSlowestRoundAndRoundsOverTheTargets) {
+  const auto cases = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/commands-blind-v15.jsonl";
+  const auto two = test_support::temp_path("two-cases.jsonl");
+  {
+    std::ifstream in(cases);
+    std::ofstream o(two);
+    std::string line;
+    for (int k = 0; k < 2 && std::getline(in, line); ++k) {
+      auto j = nlohmann::json::parse(line);
+      j["scene"] = (cases.parent_path() / j["scene"].get<std::string>()).string();  // the copy lives elsewhere
+      o << j.dump() << "\n";
+    }
+  }
+  const auto out = test_support::temp_path("eval-out.json");
+  ScopedProcess proc(test_support::spawn(
+      {"/bin/sh", "-c", bin("chatsim") + " eval commands --cases " + two.string() + " > " + out.string() + " 2>/dev/null"},
+      "/dev/null"));
+  const auto status = proc.wait(60s);
+  ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0);
+  const auto report = nlohmann::json::parse(test_support::read_file(out));
+  EXPECT_EQ(report["cases"], 2);
+  for (const auto& [name, category] : report["by_category"].items()) {
+    EXPECT_GE(category["max_decision_latency_ms"].get<double>(), category["mean_decision_latency_ms"].get<double>()) << name;
+  }
+  ASSERT_TRUE(report["slow_rounds"].is_array());
+  for (const auto& r : report["slow_rounds"]) EXPECT_GT(r["ms"].get<double>(), r["target_ms"].get<double>());
 }
