@@ -85,6 +85,9 @@ AssetRequest parse_asset(const std::string& instruction) {
     }
   } else if (auto u = unknown_brand_in(instruction, w)) {
     r.unknown_brand = *u;
+  } else if (types.empty()) {
+    // "a black zorblax": a car of unknown make.
+    if (const auto name = lexicon::unknown_vehicle_name(w, 1)) r.unknown_brand = text::join(w, name->first, name->second);
   }
   const auto colors = lexicon::find_colors(w);
   if (!colors.empty()) {

@@ -63,7 +63,9 @@ std::optional<std::string> unknown_head(const Words& p) {
     if (std::find(std::begin(skip), std::end(skip), word) != std::end(skip) || lexicon::is_color_word(word) ||
         text::is_number_word(word))
       continue;
-    if (lexicon::is_domain_word(word) || !lexicon::is_english_word(word)) return std::nullopt;
+    if (lexicon::is_domain_word(word)) return std::nullopt;
+    // "the zorblax": a make or name nobody knows; recorded objects carry no make to select by.
+    if (!lexicon::is_english_word(word) && !lexicon::unknown_vehicle_name({word}, 0)) return std::nullopt;
     return word;
   }
   return std::nullopt;

@@ -280,6 +280,24 @@ bool is_domain_word(const std::string& w) {
 
 bool is_english_word(const std::string& w) { return english_words().contains(w); }
 
+std::optional<std::pair<size_t, size_t>> unknown_vehicle_name(const std::vector<std::string>& w, size_t from) {
+  if (english_words().empty()) return std::nullopt;
+  static const char* kBefore[] = {"a", "an", "the", "another", "some", "new", "old", "big", "small", "little", "dark",
+                                  "light", "bright", "shiny", "brand"};
+  size_t i = from;
+  while (i < w.size() && (std::any_of(std::begin(kBefore), std::end(kBefore), [&](const char* b) { return w[i] == b; }) ||
+                          is_color_word(w[i]) || text::is_number_word(w[i])))
+    ++i;
+  const auto unknown = [&](const std::string& x) {
+    const bool digits = std::any_of(x.begin(), x.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return !is_domain_word(x) && !is_unit_word(x) && (digits ? !text::is_number_word(x) : !english_words().contains(x));
+  };
+  size_t end = i;
+  while (end < w.size() && end - i < 3 && unknown(w[end])) ++end;
+  if (end == i || std::isdigit(static_cast<unsigned char>(w[i][0]))) return std::nullopt;  // a name starts with a letter
+  return std::make_pair(i, end);
+}
+
 void correct_typos(std::vector<std::string>& w) {
   const auto& english = english_words();
   if (english.empty()) return;  // without a word list every unknown word could be a name: change nothing

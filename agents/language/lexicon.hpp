@@ -63,4 +63,9 @@ void correct_typos(std::vector<std::string>& words);
 bool is_domain_word(const std::string& w);
 bool is_english_word(const std::string& w);
 
+// "a black zorblax", "a vinfast vf8": where a vehicle belongs (from `from`, past articles, numbers,
+// colours and a few adjectives), a name that is neither English nor known: a vehicle of unknown
+// make. The name's words [begin, end); none without a word list (every word would be unknown).
+std::optional<std::pair<size_t, size_t>> unknown_vehicle_name(const std::vector<std::string>& w, size_t from);
+
 }  // namespace chatsim::agents::lexicon

@@ -310,7 +310,9 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
     in.target = *bad;
     return true;
   }
-  if (vehicle || has_any(c, {"another", "one more", "one"})) {
+  // "add a black zorblax at the front": a name the vocabulary lacks where a vehicle belongs is a
+  // car of unknown make (the asset agent says so), not a command not understood.
+  if (vehicle || has_any(c, {"another", "one more", "one"}) || lexicon::unknown_vehicle_name(c, 1)) {
     in.kind = "add";
     if (has_any(c, {"another", "one more", "another one", "same", "similar"}) && !names_its_own_kind(c)) in.target = "it";
     return true;

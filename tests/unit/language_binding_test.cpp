@@ -8,6 +8,8 @@
 
 #include "agents/asset/asset_choice.hpp"
 #include "agents/deletion/deletion.hpp"
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
 #include "agents/manager/decompose.hpp"
 #include "agents/motion/motion_intent.hpp"
 #include "agents/motion/planner.hpp"
@@ -174,4 +176,21 @@ TEST(LanguageBinding, TheCarHeadingTheSameWayAsIt) {
   const auto avenue = chatsim::scene::load_scene(std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-avenue");
   const auto chosen = deletion::select_objects(avenue, d, {});
   EXPECT_EQ(chosen.ids, (std::vector<std::string>{"obj_6", "obj_7"}));  // the westbound car and bus
+}
+
+TEST(LanguageBinding, AnUnknownNameWhereAVehicleBelongsIsACarOfUnknownMake) {
+  if (!lexicon::is_english_word("the")) GTEST_SKIP() << "no English word list (wamerican): every word is unknown";
+  const auto in = manager::decompose("Add a red Vinfast VF8 20 m ahead.");
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].kind, "add");  // not a view move because of the "20 m ahead"
+  const auto r = asset::parse_asset(in[0].text);
+  EXPECT_EQ(r.unknown_brand, "vinfast vf8");
+  const auto choice = asset::choose_asset(r);
+  EXPECT_EQ(choice.type, "car");
+  ASSERT_TRUE(choice.note);
+  EXPECT_NE(choice.note->find("vinfast"), std::string::npos);  // said, not silently dropped
+  EXPECT_EQ(manager::decompose("add a black zorblax at the front")[0].kind, "add");
+  EXPECT_FALSE(lexicon::unknown_vehicle_name(text::words("add a red car"), 1));
+  // Deleting one: recorded objects carry no make, so it is refused with the name.
+  EXPECT_EQ(deletion::parse_deletion("remove the zorblax").unsupported, "zorblax");
 }
