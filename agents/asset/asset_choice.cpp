@@ -6,6 +6,7 @@
 #include "agents/asset/catalog.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
+#include "common/util/json_fields.hpp"
 
 namespace chatsim::agents::asset {
 namespace {
@@ -136,26 +137,26 @@ AssetRequest parse_asset(const std::string& instruction) {
 
 nlohmann::json to_json(const AssetRequest& r) {
   nlohmann::json j = nlohmann::json::object();
-  if (r.type) j["type"] = *r.type;
-  if (r.brand) j["brand"] = *r.brand;
-  if (r.brand_name) j["brand_name"] = *r.brand_name;
-  if (r.unknown_brand) j["unknown_brand"] = *r.unknown_brand;
-  if (r.color) j["color"] = *r.color;
-  if (r.color_rgb) j["color_rgb"] = *r.color_rgb;
-  if (r.count) j["count"] = *r.count;
+  util::put_optional(j, "type", r.type);
+  util::put_optional(j, "brand", r.brand);
+  util::put_optional(j, "brand_name", r.brand_name);
+  util::put_optional(j, "unknown_brand", r.unknown_brand);
+  util::put_optional(j, "color", r.color);
+  util::put_optional(j, "color_rgb", r.color_rgb);
+  util::put_optional(j, "count", r.count);
   return j;
 }
 
 AssetRequest asset_request_from_json(const nlohmann::json& j) {
   AssetRequest r;
   if (!j.is_object()) return r;
-  if (j.contains("type")) r.type = j["type"].get<std::string>();
-  if (j.contains("brand")) r.brand = j["brand"].get<std::string>();
-  if (j.contains("brand_name")) r.brand_name = j["brand_name"].get<std::string>();
-  if (j.contains("unknown_brand")) r.unknown_brand = j["unknown_brand"].get<std::string>();
-  if (j.contains("color")) r.color = j["color"].get<std::string>();
-  if (j.contains("color_rgb")) r.color_rgb = j["color_rgb"].get<std::array<int, 3>>();
-  if (j.contains("count")) r.count = j["count"].get<int>();
+  util::get_optional(j, "type", r.type);
+  util::get_optional(j, "brand", r.brand);
+  util::get_optional(j, "brand_name", r.brand_name);
+  util::get_optional(j, "unknown_brand", r.unknown_brand);
+  util::get_optional(j, "color", r.color);
+  util::get_optional(j, "color_rgb", r.color_rgb);
+  util::get_optional(j, "count", r.count);
   return r;
 }
 
@@ -209,7 +210,7 @@ AssetChoice choose_asset(const AssetRequest& r, const std::optional<AssetChoice>
 nlohmann::json to_json(const AssetChoice& c) {
   nlohmann::json j{{"asset", c.asset}, {"type", c.type}, {"category", c.category}, {"brand_words", c.brand_words},
                    {"size_lwh", c.size_lwh}, {"color_rgb", c.color_rgb}};
-  if (c.note) j["note"] = *c.note;
+  util::put_optional(j, "note", c.note);
   return j;
 }
 
@@ -221,7 +222,7 @@ AssetChoice asset_choice_from_json(const nlohmann::json& j) {
   c.brand_words = j.value("brand_words", std::vector<std::string>{});
   c.size_lwh = j.value("size_lwh", std::array<double, 3>{4.5, 1.9, 1.5});
   c.color_rgb = j.value("color_rgb", std::array<int, 3>{128, 128, 128});
-  if (j.contains("note")) c.note = j["note"].get<std::string>();
+  util::get_optional(j, "note", c.note);
   return c;
 }
 

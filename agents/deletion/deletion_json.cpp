@@ -1,20 +1,22 @@
 // The deletion agent's request as JSON (the bus payload and the openai backend's answer).
 #include "agents/deletion/deletion.hpp"
 
+#include "common/util/json_fields.hpp"
+
 namespace chatsim::agents::deletion {
 namespace {
 
 nlohmann::json selector_json(const Selector& s) {
   nlohmann::json j{{"category", s.category}, {"noun", s.noun}, {"quantity", s.quantity}};
   if (s.quantity == "n") j["n"] = s.n;
-  if (s.color) j["color"] = *s.color;
-  if (s.region) j["region"] = *s.region;
-  if (s.lane) j["lane"] = *s.lane;
-  if (s.road_side) j["road_side"] = *s.road_side;
-  if (s.of_previous) j["of_previous"] = *s.of_previous;
+  util::put_optional(j, "color", s.color);
+  util::put_optional(j, "region", s.region);
+  util::put_optional(j, "lane", s.lane);
+  util::put_optional(j, "road_side", s.road_side);
+  util::put_optional(j, "of_previous", s.of_previous);
   if (s.anchor_only) j["anchor_only"] = true;
-  if (s.approaching) j["approaching"] = *s.approaching;
-  if (s.moving) j["moving"] = *s.moving;
+  util::put_optional(j, "approaching", s.approaching);
+  util::put_optional(j, "moving", s.moving);
   if (s.parked) j["parked"] = true;
   if (s.order) {
     j["order"] = *s.order;
@@ -29,16 +31,16 @@ Selector selector_from(const nlohmann::json& j) {
   s.noun = j.value("noun", "object");
   s.quantity = j.value("quantity", "one");
   s.n = j.value("n", 1);
-  if (j.contains("color")) s.color = j["color"].get<std::string>();
-  if (j.contains("region")) s.region = j["region"].get<std::string>();
-  if (j.contains("lane")) s.lane = j["lane"].get<std::string>();
-  if (j.contains("road_side")) s.road_side = j["road_side"].get<std::string>();
-  if (j.contains("of_previous")) s.of_previous = j["of_previous"].get<std::string>();
+  util::get_optional(j, "color", s.color);
+  util::get_optional(j, "region", s.region);
+  util::get_optional(j, "lane", s.lane);
+  util::get_optional(j, "road_side", s.road_side);
+  util::get_optional(j, "of_previous", s.of_previous);
   s.anchor_only = j.value("anchor_only", false);
-  if (j.contains("approaching")) s.approaching = j["approaching"].get<bool>();
-  if (j.contains("moving")) s.moving = j["moving"].get<bool>();
+  util::get_optional(j, "approaching", s.approaching);
+  util::get_optional(j, "moving", s.moving);
   s.parked = j.value("parked", false);
-  if (j.contains("order")) s.order = j["order"].get<std::string>();
+  util::get_optional(j, "order", s.order);
   s.nth = j.value("nth", 1);
   return s;
 }
@@ -49,7 +51,7 @@ nlohmann::json to_json(const DeletionRequest& r) {
   nlohmann::json j{{"targets", nlohmann::json::array()}, {"except", nlohmann::json::array()}};
   for (const auto& s : r.targets) j["targets"].push_back(selector_json(s));
   for (const auto& s : r.except) j["except"].push_back(selector_json(s));
-  if (r.unsupported) j["unsupported"] = *r.unsupported;
+  util::put_optional(j, "unsupported", r.unsupported);
   return j;
 }
 
@@ -57,7 +59,7 @@ DeletionRequest deletion_request_from_json(const nlohmann::json& j) {
   DeletionRequest r;
   for (const auto& s : j.value("targets", nlohmann::json::array())) r.targets.push_back(selector_from(s));
   for (const auto& s : j.value("except", nlohmann::json::array())) r.except.push_back(selector_from(s));
-  if (j.contains("unsupported")) r.unsupported = j["unsupported"].get<std::string>();
+  util::get_optional(j, "unsupported", r.unsupported);
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "agents/motion/motion_intent.hpp"
 
+#include "common/util/json_fields.hpp"
+
 namespace chatsim::agents::motion {
 
 void MotionIntent::merge(const MotionIntent& o) {
@@ -52,20 +54,20 @@ void MotionIntent::merge(const MotionIntent& o) {
 
 nlohmann::json to_json(const MotionIntent& m) {
   nlohmann::json j = nlohmann::json::object();
-  if (m.placement) j["placement"] = *m.placement;
-  if (m.distance_m) j["distance_m"] = *m.distance_m;
-  if (m.distance_word) j["distance_word"] = *m.distance_word;
-  if (m.lane) j["lane"] = *m.lane;
-  if (m.lane_edge) j["lane_edge"] = *m.lane_edge;
+  util::put_optional(j, "placement", m.placement);
+  util::put_optional(j, "distance_m", m.distance_m);
+  util::put_optional(j, "distance_word", m.distance_word);
+  util::put_optional(j, "lane", m.lane);
+  util::put_optional(j, "lane_edge", m.lane_edge);
   if (m.relative) j["relative"] = {{"to", m.relative->to}, {"region", m.relative->region}};
-  if (m.action) j["action"] = *m.action;
-  if (m.speed) j["speed"] = *m.speed;
-  if (m.speed_mps) j["speed_mps"] = *m.speed_mps;
-  if (m.direction) j["direction"] = *m.direction;
-  if (m.wrong_way) j["wrong_way"] = *m.wrong_way;
-  if (m.chase) j["chase"] = *m.chase;
-  if (m.overtake) j["overtake"] = *m.overtake;
-  if (m.distance_change_m) j["distance_change_m"] = *m.distance_change_m;
+  util::put_optional(j, "action", m.action);
+  util::put_optional(j, "speed", m.speed);
+  util::put_optional(j, "speed_mps", m.speed_mps);
+  util::put_optional(j, "direction", m.direction);
+  util::put_optional(j, "wrong_way", m.wrong_way);
+  util::put_optional(j, "chase", m.chase);
+  util::put_optional(j, "overtake", m.overtake);
+  util::put_optional(j, "distance_change_m", m.distance_change_m);
   if (!m.problems.empty()) j["problems"] = m.problems;
   return j;
 }
@@ -73,21 +75,21 @@ nlohmann::json to_json(const MotionIntent& m) {
 MotionIntent intent_from_json(const nlohmann::json& j) {
   MotionIntent m;
   if (!j.is_object()) return m;
-  if (j.contains("placement")) m.placement = j["placement"].get<std::string>();
-  if (j.contains("distance_m")) m.distance_m = j["distance_m"].get<double>();
-  if (j.contains("distance_word")) m.distance_word = j["distance_word"].get<std::string>();
-  if (j.contains("lane")) m.lane = j["lane"].get<std::string>();
-  if (j.contains("lane_edge")) m.lane_edge = j["lane_edge"].get<std::string>();
+  util::get_optional(j, "placement", m.placement);
+  util::get_optional(j, "distance_m", m.distance_m);
+  util::get_optional(j, "distance_word", m.distance_word);
+  util::get_optional(j, "lane", m.lane);
+  util::get_optional(j, "lane_edge", m.lane_edge);
   if (j.contains("relative"))
     m.relative = RelativePlacement{j["relative"].value("to", ""), j["relative"].value("region", "back")};
-  if (j.contains("action")) m.action = j["action"].get<std::string>();
-  if (j.contains("speed")) m.speed = j["speed"].get<std::string>();
-  if (j.contains("speed_mps")) m.speed_mps = j["speed_mps"].get<double>();
-  if (j.contains("direction")) m.direction = j["direction"].get<std::string>();
-  if (j.contains("wrong_way")) m.wrong_way = j["wrong_way"].get<bool>();
-  if (j.contains("chase")) m.chase = j["chase"].get<bool>();
-  if (j.contains("overtake")) m.overtake = j["overtake"].get<bool>();
-  if (j.contains("distance_change_m")) m.distance_change_m = j["distance_change_m"].get<double>();
+  util::get_optional(j, "action", m.action);
+  util::get_optional(j, "speed", m.speed);
+  util::get_optional(j, "speed_mps", m.speed_mps);
+  util::get_optional(j, "direction", m.direction);
+  util::get_optional(j, "wrong_way", m.wrong_way);
+  util::get_optional(j, "chase", m.chase);
+  util::get_optional(j, "overtake", m.overtake);
+  util::get_optional(j, "distance_change_m", m.distance_change_m);
   if (j.contains("problems")) m.problems = j["problems"].get<std::vector<std::string>>();
   return m;
 }

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "agents/language/text.hpp"
+#include "common/util/json_fields.hpp"
 
 namespace chatsim::agents::view {
 namespace {
@@ -205,12 +206,12 @@ ViewChange parse_view(const std::string& instruction) {
 
 nlohmann::json to_json(const ViewChange& v) {
   nlohmann::json j = nlohmann::json::object();
-  if (v.translation_m) j["translation_m"] = *v.translation_m;
-  if (v.yaw_deg) j["yaw_deg"] = *v.yaw_deg;
-  if (v.pitch_deg) j["pitch_deg"] = *v.pitch_deg;
-  if (v.ego_motion) j["ego_motion"] = *v.ego_motion;
-  if (v.toward_kerb_m) j["toward_kerb_m"] = *v.toward_kerb_m;
-  if (v.to_lane) j["to_lane"] = *v.to_lane;
+  util::put_optional(j, "translation_m", v.translation_m);
+  util::put_optional(j, "yaw_deg", v.yaw_deg);
+  util::put_optional(j, "pitch_deg", v.pitch_deg);
+  util::put_optional(j, "ego_motion", v.ego_motion);
+  util::put_optional(j, "toward_kerb_m", v.toward_kerb_m);
+  util::put_optional(j, "to_lane", v.to_lane);
   if (v.reset) j["reset"] = true;
   return j;
 }
@@ -218,12 +219,12 @@ nlohmann::json to_json(const ViewChange& v) {
 ViewChange view_change_from_json(const nlohmann::json& j) {
   ViewChange v;
   if (!j.is_object()) return v;
-  if (j.contains("translation_m")) v.translation_m = j["translation_m"].get<std::array<double, 3>>();
-  if (j.contains("yaw_deg")) v.yaw_deg = j["yaw_deg"].get<double>();
-  if (j.contains("pitch_deg")) v.pitch_deg = j["pitch_deg"].get<double>();
-  if (j.contains("ego_motion")) v.ego_motion = j["ego_motion"].get<std::string>();
-  if (j.contains("toward_kerb_m")) v.toward_kerb_m = j["toward_kerb_m"].get<double>();
-  if (j.contains("to_lane")) v.to_lane = j["to_lane"].get<std::string>();
+  util::get_optional(j, "translation_m", v.translation_m);
+  util::get_optional(j, "yaw_deg", v.yaw_deg);
+  util::get_optional(j, "pitch_deg", v.pitch_deg);
+  util::get_optional(j, "ego_motion", v.ego_motion);
+  util::get_optional(j, "toward_kerb_m", v.toward_kerb_m);
+  util::get_optional(j, "to_lane", v.to_lane);
   v.reset = j.value("reset", false);
   return v;
 }
