@@ -17,14 +17,15 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
   std::string first_reason;
   auto add = [&](const std::string& what, const json& intent) {
     // Twice no free place for the same request: that place is full, and each try costs a search.
-    if (failed[intent.dump()] >= 2) return;
+    const std::string place = intent.dump();
+    if (failed[place] >= 2) return;
     ++wanted;
     const json asset_args{{"instruction", "add a " + what}};
     if (add_one(c, asset_args, intent, in.text + " (" + what + ")", round, true)) {
       ++placed;
       return;
     }
-    ++failed[intent.dump()];
+    ++failed[place];
     // One vehicle fewer is not a failure of the request; why the first did not fit is kept.
     if (first_reason.empty()) first_reason = c.unresolved.back().value("reason", "");
     c.unresolved.erase(c.unresolved.end() - 1);

@@ -96,6 +96,11 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
   // A side street on the left or right lies ahead of the ego on that side.
   if (m_.lane == "cross" && m_.placement == "left") m_.placement = "left_front";
   if (m_.lane == "cross" && m_.placement == "right") m_.placement = "right_front";
+  // Per lane once, not per candidate start: whether the lane said ("the right lane") has a lane of
+  // the ego's way beyond it on that side.
+  if (m_.lane == "left" || m_.lane == "right")
+    for (size_t li = 0; li < scene.lanes.lanes().size(); ++li)
+      lane_beside_.push_back(same_way_lane_beside(int(li), m_.lane == "left" ? 1 : -1));
   const auto ego_lane = scene.lanes.containing(ego_.p);
   for (const auto& l : ego_lane)
     if (scene.lanes.lanes()[size_t(l.lane)].type == "driving") {

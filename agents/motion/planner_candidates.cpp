@@ -88,7 +88,7 @@ double Planner::lane_hint_penalty(int lane, double s) const {
     // Not "in the right lane alongside me": level with the ego, its own lane is not meant.
     const bool level = m_.placement == "left" || m_.placement == "right";
     const bool outermost_own =
-        !level && std::abs(lat) <= 1.5 && same_way_as_ego(lane, s) && !same_way_lane_beside(lane, side);
+        !level && std::abs(lat) <= 1.5 && same_way_as_ego(lane, s) && !lane_beside_[size_t(lane)];
     return l.type == "driving" && (beside || outermost_own) ? 0 : 60;
   }
   if (*m_.lane == "cross") {  // a lane across the ego's: a side or cross street

@@ -137,6 +137,7 @@ class Planner {
   bool collided_ = false;  // the last run_once accepted a collision
   mutable bool lane_missed_ = false;  // the last run_once's start is not on the lane asked for
   double ego_speed_ = 0;              // the ego's mean recorded speed over the clip, m/s
+  std::vector<bool> lane_beside_;     // "the left/right lane": a same-way lane beside each lane, that side
 };
 
 }  // namespace chatsim::agents::motion::detail
