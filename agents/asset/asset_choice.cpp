@@ -11,23 +11,6 @@
 namespace chatsim::agents::asset {
 namespace {
 
-// A capitalised word right before a vehicle noun that we do not know: an unknown brand.
-std::optional<std::string> unknown_brand_in(const std::string& instruction, const std::vector<std::string>& w) {
-  const auto types = lexicon::find_types(w);
-  if (types.empty() || types.front().begin == 0) return std::nullopt;
-  const std::string before = w[types.front().begin - 1];
-  static const char* common[] = {"a", "an", "the", "one", "another", "new", "red", "big", "small", "old", "fast",
-                                 "slow", "parked", "moving", "police", "white", "black", "second", "sports", "my"};
-  for (const char* c : common)
-    if (before == c) return std::nullopt;
-  if (lexicon::is_color_word(before) || text::is_number_word(before) || before == "dark" || before == "light") return std::nullopt;
-  // Only if the user wrote it with a capital letter (a name, not an adjective).
-  const size_t at = instruction.find(before.size() ? std::string(1, char(std::toupper(before[0]))) + before.substr(1) : "");
-  if (at == std::string::npos) return std::nullopt;
-  if (at == 0) return std::nullopt;  // sentence start capitalises anything
-  return instruction.substr(at, before.size());
-}
-
 // "faster than the traffic", "through the cars": a noun a preposition governs is where or what
 // the added vehicle is compared with, not what is added.
 bool governed_by_preposition(const std::vector<std::string>& w, size_t begin) {
@@ -84,11 +67,14 @@ AssetRequest parse_asset(const std::string& instruction) {
     if (!r.type || *r.type == "car") {
       if (brands.front().type != "car" || !r.type) r.type = brands.front().type;
     }
-  } else if (auto u = unknown_brand_in(instruction, w)) {
-    r.unknown_brand = *u;
-  } else if (types.empty()) {
-    // "a black zorblax": a car of unknown make.
-    if (const auto name = lexicon::unknown_vehicle_name(w, 1)) r.unknown_brand = text::join(w, name->first, name->second);
+  } else if (const auto name = lexicon::unknown_vehicle_name(w, 1);
+             name && (types.empty() || name->second <= types.front().begin)) {
+    // "a black Zorblax", "a Zorblax van": a make nobody knows, said in the choice's note as written.
+    r.unknown_brand = text::join(w, name->first, name->second);
+    std::string lower = instruction;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+    if (const size_t at = lower.find(*r.unknown_brand); at != std::string::npos)
+      r.unknown_brand = instruction.substr(at, r.unknown_brand->size());
   }
   const auto colors = lexicon::find_colors(w);
   if (!colors.empty()) {

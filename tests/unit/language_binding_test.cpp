@@ -190,6 +190,9 @@ TEST(LanguageBinding, AnUnknownNameWhereAVehicleBelongsIsACarOfUnknownMake) {
   ASSERT_TRUE(choice.note);
   EXPECT_NE(choice.note->find("vinfast"), std::string::npos);  // said, not silently dropped
   EXPECT_EQ(manager::decompose("add a black zorblax at the front")[0].kind, "add");
+  const auto van = asset::parse_asset("add a zorblax van 20 m ahead");  // before a noun too, in lower case
+  EXPECT_EQ(van.unknown_brand, "zorblax");
+  EXPECT_EQ(van.type, "van");
   EXPECT_FALSE(lexicon::unknown_vehicle_name(text::words("add a red car"), 1));
   // Deleting one: recorded objects carry no make, so it is refused with the name.
   EXPECT_EQ(deletion::parse_deletion("remove the zorblax").unsupported, "zorblax");
