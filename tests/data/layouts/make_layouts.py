@@ -360,7 +360,90 @@ def left_hand():
           lanes, east, 7, objects)
 
 
+def turn_pocket():
+    """Urban arterial: a kerbside bus lane, two through lanes east (ego in the right one, y=0), a
+    left-turn pocket opening at x=30 to the crossroads at x=80; two lanes west given as polylines
+    along +x with direction "backward"; no parking."""
+    east = lambda y: line(-60, y, 220, y)
+    west = lambda y: line(220, y, -60, y)
+    pocket = [[30.0, 3.5, 0.0], [40.0, 7.0, 0.0]] + line(45, 7, 75, 7)
+    backward = lambda lid, y: dict(lane(lid, line(-60, y, 220, y)), direction="backward")
+    lanes = [lane("east_bus_lane", east(-3.5)), lane("east_right", east(0)), lane("east_left", east(3.5)),
+             lane("east_turn_pocket", pocket), backward("west_inner", 10.5), backward("west_kerb", 14),
+             lane("north_out", line(81.75, 16, 81.75, 100)), lane("north_in", line(78.25, 100, 78.25, 16)),
+             lane("south_out", line(78.25, -5.25, 78.25, -90)), lane("south_in", line(81.75, -90, 81.75, -5.25))]
+    objects = [obj(1, "vehicle.bus.rigid", track_along(east(-3.5), 70, 7), "red"),
+               obj(2, "vehicle.car", track_along(east(0), 95, 8), "white"),
+               obj(3, "vehicle.car", static(68, 7), "grey"),
+               obj(4, "vehicle.car", static(60, 7), "black", SIZES["suv"]),
+               obj(5, "vehicle.car", track_along(west(10.5), 100, 12), "blue"),
+               obj(6, "vehicle.truck", track_along(west(14), 160, 6), "orange"),
+               obj(7, "vehicle.motorcycle", track_along(east(3.5), 65, 12), "yellow"),
+               obj(8, "vehicle.car", static(78.25, 25, -math.pi / 2), "silver"),
+               obj(9, "human.pedestrian.adult", track_along(line(74, -8, 74, 20), 0, 1.2)),
+               obj(10, "vehicle.bicycle", track_along(east(-3.5), 50, 5), "green"),
+               obj(11, "vehicle.emergency.police", static(81.75, -20, math.pi / 2), "white"),
+               obj(12, "vehicle.car", track_along(east(0), 45, 8), "green")]
+    write("blind-turnpocket", "hand-made layout: arterial with a kerbside bus lane, a left-turn pocket before a "
+          "crossroads, westbound lanes drawn backward", lanes, east(0), 8, objects)
+
+
+def offset(pts, d):
+    """The polyline moved d metres to its left."""
+    out = []
+    for k, p in enumerate(pts):
+        a, b = pts[max(k - 1, 0)], pts[min(k + 1, len(pts) - 1)]
+        yaw = math.atan2(b[1] - a[1], b[0] - a[0])
+        out.append([p[0] - d * math.sin(yaw), p[1] + d * math.cos(yaw), 0.0])
+    return out
+
+
+def s_bend_centre(step=5.0):
+    """Road centre along +x from x=-60, straight to x=30, 35 deg left over 60 m, 35 deg right over 60 m, straight."""
+    pts, x, y, yaw = [[-60.0, 1.75, 0.0]], -60.0, 1.75, 0.0
+    for length, turn in ((90, 0.0), (60, 35.0), (60, -35.0), (120, 0.0)):
+        n = int(length / step)
+        for _ in range(n):
+            yaw += math.radians(turn) / n / 2
+            x, y = x + step * math.cos(yaw), y + step * math.sin(yaw)
+            yaw += math.radians(turn) / n / 2
+            pts.append([round(x, 3), round(y, 3), 0.0])
+    return pts
+
+
+def s_bend():
+    """Country road, one lane each way (the oncoming one drawn along +x, direction "backward"),
+    an S-bend from x=30, a lay-by on the right, a farm track to the right after the bend; a slow
+    tractor ahead of the ego."""
+    centre = s_bend_centre()
+    ego, oncoming = offset(centre, -1.75), offset(centre, 1.75)
+    sx, sy, syaw = sample(centre, 170)
+    right = lambda d, side: [sx + side * math.sin(syaw) + d * math.sin(syaw), sy - side * math.cos(syaw) - d * math.cos(syaw)]
+    track_out = [right(5.25, -1.75) + [0.0], right(80, -1.75) + [0.0]]
+    track_in = [right(80, 1.75) + [0.0], right(5.25, 1.75) + [0.0]]
+    lanes = [lane("ego_way", ego), dict(lane("other_way", oncoming), direction="backward"),
+             lane("lay_by", line(5, -3.25, 30, -3.25), 3.0, "parking"),
+             lane("farm_track_out", line(*track_out[0][:2], *track_out[1][:2])),
+             lane("farm_track_in", line(*track_in[0][:2], *track_in[1][:2]))]
+    back = list(reversed(oncoming))
+    length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(back, back[1:]))
+    tx, ty = right(20, 1.75)
+    objects = [obj(1, "vehicle.construction", track_along(ego, 130, 4), "yellow", [4.5, 2.4, 3.0]),
+               obj(2, "vehicle.car", track_along(back, length - 140, 11), "red"),
+               obj(3, "vehicle.truck", track_along(back, length - 230, 9), "white"),
+               obj(4, "vehicle.car", static(18, -3.25), "silver"),
+               obj(5, "vehicle.car", track_along(ego, 40, 9), "blue"),
+               obj(6, "vehicle.bicycle", track_along(ego, 95, 5), "orange"),
+               obj(7, "human.pedestrian.adult", track_along(line(40, 6, -60, 6), 0, 1.3)),
+               obj(8, "vehicle.car", static(round(tx, 3), round(ty, 3), round(syaw + math.pi / 2, 4)), "green"),
+               obj(9, "vehicle.car", track_along(back, length - 75, 12), "black", SIZES["suv"])]
+    write("blind-sbend", "hand-made layout: country road with an S-bend, a lay-by on the right, a farm track "
+          "to the right, oncoming lane drawn backward", lanes, ego, 9, objects)
+
+
 if __name__ == "__main__":
+    turn_pocket()
+    s_bend()
     left_hand()
     on_ramp()
     narrow()
