@@ -186,6 +186,8 @@ AssetChoice choose_asset(const AssetRequest& r, const std::optional<AssetChoice>
   out.type = type;
   if (const auto* vt = lexicon::vehicle_type(type)) out.category = vt->category;
   if (r.color_rgb) out.color_rgb = *r.color_rgb;
+  if (type == "construction" || type == "trailer")
+    out.note = "no " + type + " model in the asset library; a generic truck stands in (labelled " + out.category + ")";
   if (r.unknown_brand && !r.brand) {
     out.note = "no asset for the brand '" + *r.unknown_brand + "'; used a generic " + type;
     out.brand_words = {*r.unknown_brand};

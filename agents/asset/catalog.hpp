@@ -47,7 +47,8 @@ class Catalog {
 
   const std::vector<CatalogEntry>& entries() const { return entries_; }
   const CatalogEntry* find(const std::string& asset) const;
-  // The first generic (brand-less) entry of a type; the first entry when none.
+  // The first generic (brand-less) entry of a type; a truck for a tractor or trailer (no mesh of
+  // their own); the first entry when none.
   const CatalogEntry& generic(const std::string& type) const;
 
  private:

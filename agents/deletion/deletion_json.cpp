@@ -12,6 +12,7 @@ nlohmann::json selector_json(const Selector& s) {
   util::put_optional(j, "color", s.color);
   util::put_optional(j, "region", s.region);
   util::put_optional(j, "lane", s.lane);
+  util::put_optional(j, "lane_use", s.lane_use);
   util::put_optional(j, "road_side", s.road_side);
   util::put_optional(j, "of_previous", s.of_previous);
   if (s.anchor_only) j["anchor_only"] = true;
@@ -34,6 +35,7 @@ Selector selector_from(const nlohmann::json& j) {
   util::get_optional(j, "color", s.color);
   util::get_optional(j, "region", s.region);
   util::get_optional(j, "lane", s.lane);
+  util::get_optional(j, "lane_use", s.lane_use);
   util::get_optional(j, "road_side", s.road_side);
   util::get_optional(j, "of_previous", s.of_previous);
   s.anchor_only = j.value("anchor_only", false);

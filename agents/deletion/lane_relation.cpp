@@ -56,6 +56,7 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   const auto& lanes = scene.lanes;
   if (lanes.empty() || scene.frames.empty()) return r;
   const int own = lane_at(lanes, p, false);
+  r.own = own;
   const auto& ego_pose = scene.frames.front().ego_to_world;
   const Eigen::Vector2d ego = ego_pose.translation().head<2>();
   const Eigen::Vector3d fwd = ego_pose.linear().col(0);

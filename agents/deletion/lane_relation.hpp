@@ -11,6 +11,7 @@
 namespace chatsim::agents::deletion {
 
 struct LaneRelation {
+  int own = -1;           // the lane it stands on (index in the lane map), -1 on none
   bool ego = false;       // the lane the ego drives in at frame 0
   bool left = false;      // leftmost lane of the ego's direction (with one lane: left and right)
   bool middle = false;    // lanes on both sides in the same direction

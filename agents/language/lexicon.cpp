@@ -65,6 +65,9 @@ const std::map<std::string, VehicleType>& types() {
       {"firetruck", {"firetruck", "vehicle.emergency.firetruck", "vehicle.emergency"}},
       {"motorcycle", {"motorcycle", "vehicle.motorcycle", "vehicle.motorcycle"}},
       {"bicycle", {"bicycle", "vehicle.bicycle", "vehicle.bicycle"}},
+      // nuScenes' construction vehicles and trailers: no asset of their own (a truck stands in).
+      {"construction", {"construction", "vehicle.construction", "vehicle.construction"}},
+      {"trailer", {"trailer", "vehicle.trailer", "vehicle.trailer"}},
       {"cone", {"cone", "movable_object.trafficcone", "movable_object.trafficcone"}},
       {"barrier", {"barrier", "movable_object.barrier", "movable_object.barrier"}},
       {"pedestrian", {"pedestrian", "human.pedestrian.adult", "human"}},

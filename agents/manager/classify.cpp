@@ -57,6 +57,11 @@ bool classify_whole(const Words& c, Instruction& in) {
     in.target = in.text;
     return true;
   }
+  // "remove both cars queuing to turn left", "delete the cars stuck in traffic": what the vehicles
+  // to remove are doing, not a scene to build.
+  const bool removes_vehicles = (has_any({first}, {"remove", "delete", "erase", "eliminate", "wipe", "ditch"}) ||
+                                 text::find_phrase(c, "get rid of") == 0) && mentions_vehicle(c);
+  if (removes_vehicles) return false;
   if (has_any(c, {"traffic jam", "jam", "jams", "standstill", "stop and go", "congested", "congestion", "gridlock",
                   "stuck in traffic", "bumper to bumper", "jammed", "queue of",
                   "tailback", "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
@@ -337,8 +342,11 @@ Instruction classify(const Words& c_in) {
   const bool view_idiom = !vehicle && !added_ref &&
                           has_any(c, {"look behind", "look back", "look backward", "look backwards", "turn around",
                                       "face backward", "face backwards", "look the other way", "face the other way"});
+  // "drive a lot faster", "go slower": an order to drive, with no vehicle to drive, is the ego's.
+  const bool ego_drives = !vehicle && !added_ref && c.size() > 1 && has_any({c.front()}, {"drive", "go", "speed"}) &&
+                          has_any(c, {"faster", "slower", "slowly", "quickly", "fast", "slow", "speed up", "slow down"});
   const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
-                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom;
+                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom || ego_drives;
   const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "get", "set", "put", "place", "position",
                                        "push", "paint", "repaint", "respray", "recolor", "color", "turn",
                                        "move", "speed", "slow", "swap", "replace", "switch", "should", "park", "stop",

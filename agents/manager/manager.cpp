@@ -6,6 +6,7 @@
 #include "agents/core/scene_cache.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
+#include "agents/manager/classify.hpp"
 
 namespace chatsim::agents::manager {
 namespace {
@@ -75,6 +76,30 @@ ChatResult Manager::chat(const std::string& id, const std::string& scene_dir, co
   }
 }
 
+namespace {
+
+// "delete the motorbike", then "and the bike in the bus lane too": a round with no verb of its own
+// that goes on from the last one takes that round's verb. Read on its own it names a vehicle and
+// no verb, which is an addition.
+void continue_previous_round(const Conversation& c, const std::string& command, std::vector<Instruction>& instructions) {
+  if (c.rounds.empty() || instructions.size() != 1 || instructions.front().kind != "add") return;
+  const auto w = text::words(command);
+  const bool as_well = w.size() >= 2 && w[w.size() - 2] == "as" && w.back() == "well";
+  const bool goes_on = !w.empty() && (w.front() == "and" || w.front() == "also" || w.front() == "plus" ||
+                                      w.back() == "too" || as_well);
+  const auto& verbs = detail::add_verbs();
+  if (!goes_on || std::any_of(w.begin(), w.end(), [&](const std::string& x) {
+        return std::find(verbs.begin(), verbs.end(), x) != verbs.end();
+      }))
+    return;
+  const auto& last = c.rounds.back().at("instructions");
+  if (last.empty() || !last.back().get<std::string>().starts_with("delete: ")) return;
+  instructions.front().kind = "delete";
+  instructions.front().text = "remove " + instructions.front().text;
+}
+
+}  // namespace
+
 ChatResult Manager::run_round(Conversation& c, const std::string& scene_dir, const std::string& command) {
   c.scene_dir = scene_dir;
   const size_t unresolved_before = c.unresolved.size();
@@ -85,6 +110,7 @@ ChatResult Manager::run_round(Conversation& c, const std::string& scene_dir, con
     instructions.push_back({"unclear", command, "", 1});
   } else {
     instructions = instructions_from_json(backend_->complete(llm::prompt_for("manager"), trimmed));
+    continue_previous_round(c, trimmed, instructions);
   }
   if (command.size() > 2000)
     c.unresolved.push_back({{"instruction", command.substr(0, 80) + "..."},

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "agents/language/lane_names.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 #include "agents/motion/motion_intent.hpp"
@@ -170,7 +171,9 @@ std::optional<std::string> find_lane(const Words& w_in) {
                   "lane of oncoming", "other side", "opposite side", "other carriageway", "opposite carriageway",
                   "the other way", "opposite direction", "other direction", "far side", "other side of the street"}))
     return "oncoming";
-  if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane"}))
+  if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane",
+                  "farm track", "dirt track", "dirt road", "track", "alley", "alleyway", "driveway", "access road",
+                  "service road", "slip lane"}))
     return "cross";
   if (has_any(w, {"on ramp", "slip road", "ramp", "merging lane", "acceleration lane", "entry lane"})) return "ramp";
   if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot",
@@ -379,6 +382,13 @@ void find_direction(const Words& w, MotionIntent& m) {
   if (has_any(w, {"wrong way", "wrong direction", "against traffic", "against the traffic", "against the flow",
                   "ghost driver", "wrong side", "contraflow", "against the direction"}))
     m.wrong_way = true;
+  // "toward me on my side of the road", "coming at us in our lane": the ego's side runs the ego's
+  // way, so coming toward it there is against the traffic (and, unsaid, from ahead).
+  if (m.direction == "toward" && !m.wrong_way &&
+      has_any(w, {"my side of the road", "our side of the road", "my side", "our side", "my lane", "our lane",
+                  "same lane", "in my lane", "this side of the road"}) &&
+      m.placement != "back")
+    m.wrong_way = true;
 }
 
 // "the lane next to the median", "the slow lane": which of a direction's lanes, said by the road
@@ -429,6 +439,11 @@ std::optional<std::string> find_lane_edge(Words& w) {
 MotionIntent parse_motion(const std::string& instruction) {
   Words w = text::words(instruction);
   MotionIntent m;
+  // "in the left-turn lane", "in the bus lane": a place; "left" and "turn" say no turn or side.
+  if (const auto name = language::find_lane_name(w)) {
+    m.lane_use = name->use;
+    for (size_t k = name->begin; k < name->end; ++k) w[k] = "_";
+  }
   m.lane_edge = find_lane_edge(w);
   m.relative = find_place_of(w);
   if (!m.relative) m.relative = find_relative(w);

@@ -108,7 +108,10 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
     const double exit_s = c.s_other + other_dir * radius;
     if (exit_s < 0 || exit_s > other.length()) continue;
     TurnPlan plan;
-    plan.path = lane_path(map, lane, s0, dir, std::max(0.0, ahead - radius));
+    // Out of a street's mouth: the turn starts a radius short of the lane it joins, not of the
+    // street's end, so that it stays on the lanes (a quarter circle, not a bulge across the kerb).
+    const double gap = street_ends_here ? std::abs(map.project(c.other, map.point_at(lane, c.s_self)).lateral) : 0.0;
+    plan.path = lane_path(map, lane, s0, dir, std::clamp(ahead + gap - radius, 0.0, ahead));
     const size_t before = plan.path.points.size();
     append_hermite(plan.path, map.point_at(c.other, exit_s), other_yaw);
     plan.connector.assign(plan.path.points.begin() + long(before), plan.path.points.end());

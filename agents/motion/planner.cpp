@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "agents/language/lane_names.hpp"
 #include "agents/motion/planner_impl.hpp"
 
 namespace chatsim::agents::motion {
@@ -101,6 +102,8 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
   if (m_.lane == "left" || m_.lane == "right")
     for (size_t li = 0; li < scene.lanes.lanes().size(); ++li)
       lane_beside_.push_back(same_way_lane_beside(int(li), m_.lane == "left" ? 1 : -1));
+  // "in the bus lane": the map's lanes of that use; a map without one leaves the start free.
+  if (m_.lane_use) use_lanes_ = language::lanes_for_use(scene.lanes, *m_.lane_use);
   const auto ego_lane = scene.lanes.containing(ego_.p);
   for (const auto& l : ego_lane)
     if (scene.lanes.lanes()[size_t(l.lane)].type == "driving") {
@@ -141,7 +144,7 @@ PlanResult Planner::run() {
   if (best.ok && (best_collided || (req_.strict && best_missed))) {
     PlanResult refused;
     refused.reason = best_collided ? best.notes.back()
-                                   : "no start on the " + m_.lane.value_or(m_.lane_edge.value_or("")) +
+                                   : "no start on the " + lane_said() +
                                          " lane is free of the traffic there (its recorded vehicles would run into it;"
                                          " remove them first to fill that lane)";
     return refused;
@@ -250,9 +253,9 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
   result.lane = scene_.lanes.lanes()[size_t(c.lane)].id;
   // The lane asked for had no start that works: say which lane it got instead.
   const bool edge_missed = m_.lane_edge && lane_edge_penalties()[size_t(c.lane)] > 1.0;
-  lane_missed_ = edge_missed || (m_.lane && lane_hint_penalty(c.lane, c.s) >= 60);
+  lane_missed_ = edge_missed || lane_hint_penalty(c.lane, c.s) >= 60;
   if (lane_missed_)
-    result.notes.push_back("no start in the " + (edge_missed ? *m_.lane_edge : *m_.lane) +
+    result.notes.push_back("no start in the " + (edge_missed ? *m_.lane_edge : lane_said()) +
                            " lane was free of other traffic; it drives in lane " + result.lane + " instead");
   result.speed_mps = e.speed;
   result.resolved = m_;

@@ -74,6 +74,16 @@ bool Planner::same_way_as_ego(int lane, double s) const {
 }
 
 double Planner::lane_hint_penalty(int lane, double s) const {
+  const bool off_use = !use_lanes_.empty() && std::find(use_lanes_.begin(), use_lanes_.end(), lane) == use_lanes_.end();
+  return (off_use ? 60 : 0) + said_lane_penalty(lane, s);
+}
+
+std::string Planner::lane_said() const {
+  if (m_.lane_use && !use_lanes_.empty()) return *m_.lane_use;
+  return m_.lane.value_or(m_.lane_edge.value_or(""));
+}
+
+double Planner::said_lane_penalty(int lane, double s) const {
   if (!m_.lane) return 0;
   const auto& l = scene_.lanes.lanes()[size_t(lane)];
   const double lat = lateral_of(lane);
@@ -192,7 +202,11 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         const auto ds = direction_score(int(li), s, dir, parked);
         if (!ds) continue;
         Candidate c{int(li), s, dir, parked, *ds};
-        c.score += std::abs(pe.norm() - region.d_pref);
+        // A lane said with no distance ("on the farm track"): wherever it is, rather than the
+        // usual distance on another lane; nearer still better.
+        const bool lane_said = m_.lane || m_.lane_edge || !use_lanes_.empty();
+        const double off = std::abs(pe.norm() - region.d_pref);
+        c.score += lane_said && !m_.distance_m ? std::min(off, 30.0) + 0.1 * off : off;
         c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
         if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(pe.y());
         if (placement == "left" || placement == "right") c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x());

@@ -90,7 +90,9 @@ class Planner {
   bool nothing_said_about_motion() const;
   bool wants_parked(bool on_parking) const;
   bool same_way_as_ego(int lane, double s) const;
-  double lane_hint_penalty(int lane, double s) const;
+  double lane_hint_penalty(int lane, double s) const;   // the lane said and the lane's use said
+  double said_lane_penalty(int lane, double s) const;
+  std::string lane_said() const;  // for notes: "bus", "left", "inner"
   std::vector<double> lane_edge_penalties() const;
 
   // Direction checks and preferences for one candidate travelling dir on lane.
@@ -138,6 +140,7 @@ class Planner {
   mutable bool lane_missed_ = false;  // the last run_once's start is not on the lane asked for
   double ego_speed_ = 0;              // the ego's mean recorded speed over the clip, m/s
   std::vector<bool> lane_beside_;     // "the left/right lane": a same-way lane beside each lane, that side
+  std::vector<int> use_lanes_;        // "the bus lane": the lanes of the use said (lane_names.hpp)
 };
 
 }  // namespace chatsim::agents::motion::detail

@@ -1,8 +1,10 @@
 #include "agents/view/view.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "agents/language/lane_names.hpp"
 #include "agents/language/text.hpp"
 #include "common/util/json_fields.hpp"
 
@@ -175,6 +177,10 @@ ViewChange parse_view(const std::string& instruction) {
         at != std::string::npos && at >= 2 && (w[at - 1] == "the" || w[at - 1] == "an") &&
         (w[at - 2] == "to" || w[at - 2] == "into" || w[at - 2] == "in" || w[at - 2] == "onto"))
       v.to_lane = lane;
+  // "into the bus lane": a lane named by its use.
+  if (const auto name = language::find_lane_name(w);
+      name && name->begin >= 2 && w[name->begin - 1] == "the" && text::has_any({w[name->begin - 2]}, {"to", "into", "in", "onto"}))
+    v.to_lane = name->use;
   // The kerb's side is the road's to say: the sideways part said by it waits for the scene.
   if (v.translation_m && (*v.translation_m)[1] != 0 &&
       text::has_any(w, {"curb", "sidewalk", "pavement", "middle of the road", "center of the road", "center line"})) {
@@ -237,10 +243,19 @@ std::optional<double> lane_offset(const scene::Scene& scene, const std::string& 
   const auto& pose = scene.frames.front().ego_to_world;
   const Eigen::Vector2d ego = pose.translation().head<2>(), fwd = pose.linear().col(0).head<2>().normalized();
   const Eigen::Vector2d left(-fwd.y(), fwd.x());
+  const bool by_side = kind == "parking" || kind == "oncoming" || kind == "left" || kind == "right";
+  const auto of_use = by_side ? std::vector<int>{} : language::lanes_for_use(scene.lanes, kind);
   std::optional<double> best;
   for (size_t i = 0; i < scene.lanes.lanes().size(); ++i) {
     const auto& lane = scene.lanes.lanes()[i];
     const auto at = scene.lanes.project(int(i), ego);
+    if (!by_side) {  // a lane of that use, beside the ego (not one that starts further on)
+      if (std::find(of_use.begin(), of_use.end(), int(i)) == of_use.end() || at.s <= 0.5 || at.s >= lane.length() - 0.5)
+        continue;
+      const double lateral = (scene.lanes.point_at(int(i), at.s) - ego).dot(left);
+      if (std::abs(lateral) < 20 && (!best || std::abs(lateral) < std::abs(*best))) best = lateral;
+      continue;
+    }
     const double yaw = scene.lanes.travel_yaw_at(int(i), at.s);
     const double along = Eigen::Vector2d(std::cos(yaw), std::sin(yaw)).dot(fwd);
     const double lateral = (scene.lanes.point_at(int(i), at.s) - ego).dot(left);

@@ -1,6 +1,7 @@
 #include "common/scene/lane_map.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -218,6 +219,46 @@ bool LaneMap::merges(int index) const {
       return true;
   }
   return false;
+}
+
+int LaneMap::diverges(int index) const {
+  const auto& l = lanes_[size_t(index)];
+  if (l.type != "driving") return 0;
+  const bool backward = l.direction == TrafficDirection::Backward;
+  const double start_s = backward ? l.length() : 0.0, end_s = backward ? 0.0 : l.length();
+  const Eigen::Vector2d start = point_at(index, start_s), end = point_at(index, end_s);
+  const double yaw = travel_yaw_at(index, start_s);
+  for (size_t i = 0; i < lanes_.size(); ++i) {
+    if (int(i) == index || lanes_[i].type != "driving") continue;
+    const auto pos = project(int(i), start);
+    if (pos.s <= 1 || pos.s >= lanes_[i].length() - 1 || std::abs(pos.lateral) > 5) continue;
+    if (std::abs(std::remainder(travel_yaw_at(int(i), pos.s) - yaw, 2 * std::numbers::pi)) >= std::numbers::pi / 8) continue;
+    // The parent runs on past the lane's end (the pocket stops at the junction, the road does not).
+    const auto at_end = project(int(i), end);
+    if (at_end.s <= 1 || at_end.s >= lanes_[i].length() - 1) continue;
+    const double side = at_end.lateral * (lanes_[i].direction == TrafficDirection::Backward ? -1 : 1);
+    if (std::abs(side) >= 2) return side > 0 ? 1 : -1;
+  }
+  return 0;
+}
+
+std::vector<int> LaneMap::named(const std::string& word) const {
+  std::vector<int> out;
+  if (word.empty()) return out;
+  for (size_t i = 0; i < lanes_.size(); ++i) {
+    std::string token;
+    bool found = false;
+    for (const char c : lanes_[i].id + "_") {
+      if (std::isalpha(static_cast<unsigned char>(c))) {
+        token += char(std::tolower(static_cast<unsigned char>(c)));
+        continue;
+      }
+      found = found || token == word;
+      token.clear();
+    }
+    if (found) out.push_back(int(i));
+  }
+  return out;
 }
 
 }  // namespace chatsim::scene

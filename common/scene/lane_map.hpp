@@ -70,6 +70,13 @@ class LaneMap {
   // Whether a driving lane's legal travel ends beside another driving lane of the same way (2-5 m
   // across), not at a crossing: an on-ramp or a merging lane.
   bool merges(int lane) const;
+  // Whether a driving lane's legal travel starts beside another driving lane of the same way (2-5
+  // m across) and it ends short of that lane's end: a turn pocket or an exit lane opening off it.
+  // Returns the side it opens to (+1 left, -1 right), 0 when it does not.
+  int diverges(int lane) const;
+  // Lanes whose id names them by a word ("bus" finds "east_bus_lane", "lay_by" is found by "lay"
+  // and "by"): the map's own vocabulary for lanes a user names ("the bus lane", "the lay-by").
+  std::vector<int> named(const std::string& word) const;
 
  private:
   // p's position on lane i when p lies on it (within half its width plus margin, inside its extent).

@@ -1,0 +1,203 @@
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "agents/deletion/deletion.hpp"
+#include "agents/deletion/lane_relation.hpp"
+#include "agents/language/lane_names.hpp"
+#include "agents/language/lexicon.hpp"
+
+// Which recorded objects a deletion request's selectors pick in a scene.
+namespace chatsim::agents::deletion {
+namespace {
+
+struct Candidate {
+  const scene::ObjectTrack* object;
+  Eigen::Vector2d pe;   // ego frame 0
+  double speed;
+  LaneRelation lane;
+  double yaw = 0;       // heading, ego frame 0
+};
+
+// Of the matches, those behind, in front of or beside `anchor` (in its own heading), nearest first.
+std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, const Candidate& anchor,
+                                        const std::string& relation) {
+  std::vector<const Candidate*> out;
+  const double c = std::cos(anchor.yaw), s = std::sin(anchor.yaw);
+  for (const auto* x : m) {
+    if (x == &anchor) continue;
+    const Eigen::Vector2d d = x->pe - anchor.pe;
+    const double along = c * d.x() + s * d.y(), side = -s * d.x() + c * d.y();
+    const double lane_room = 3 + 0.2 * std::abs(along);  // a road may bend between them
+    const bool ok = relation == "same_way" ? std::cos(x->yaw - anchor.yaw) > 0.7 && x->speed > 0.5
+                    : relation == "behind" ? (along < -1 && std::abs(side) < lane_room)
+                    : relation == "front" ? (along > 1 && std::abs(side) < lane_room)
+                    : relation == "near"  ? true
+                                          : (std::abs(along) < 6 && std::abs(side) > 1.5 && std::abs(side) < 7);
+    if (ok) out.push_back(x);
+  }
+  // "the bicycle and the car right behind it": in its stream of traffic, not a parked car beside
+  // it (and behind a parked car, the next one parked), when there is one.
+  const auto same_stream = [&](const Candidate* x) { return (x->speed > 0.5) == (anchor.speed > 0.5); };
+  if (relation != "near" && relation != "same_way" && std::any_of(out.begin(), out.end(), same_stream))
+    std::erase_if(out, [&](const Candidate* x) { return !same_stream(x); });
+  std::sort(out.begin(), out.end(), [&](const Candidate* a, const Candidate* b) {
+    return (a->pe - anchor.pe).norm() < (b->pe - anchor.pe).norm();
+  });
+  return out;
+}
+
+bool scene_has_parking(const scene::Scene& scene) {
+  const auto& lanes = scene.lanes.lanes();
+  return std::any_of(lanes.begin(), lanes.end(), [](const scene::Lane& l) { return l.type == "parking"; });
+}
+
+bool matches(const Selector& s, const Candidate& c) {
+  if (!s.category.empty() && !c.object->has_category_prefix(s.category)) return false;
+  if (s.color && (!c.object->color_rgb || lexicon::color_class(*c.object->color_rgb) != *s.color)) return false;
+  if (s.moving && (c.speed > 0.5) != *s.moving) return false;
+  if (s.lane && !has_lane(c.lane, *s.lane)) return false;
+  if (s.road_side && !has_lane(c.lane, *s.road_side)) return false;
+  if (s.approaching) {  // its heading points at the ego's place
+    const bool toward = c.speed > 0.5 && -(std::cos(c.yaw) * c.pe.x() + std::sin(c.yaw) * c.pe.y()) > 0;
+    if (toward != *s.approaching) return false;
+  }
+  if (s.region) {
+    const double a = std::atan2(c.pe.y(), c.pe.x()) * 180 / std::numbers::pi;
+    if (*s.region == "front" && !(c.pe.x() > 0 && std::abs(a) <= 60)) return false;
+    if (*s.region == "back" && !(c.pe.x() < 0 && std::abs(a) >= 120)) return false;
+    if (*s.region == "left" && !(c.pe.y() > 0.5)) return false;
+    if (*s.region == "right" && !(c.pe.y() < -0.5)) return false;
+  }
+  return true;
+}
+
+
+// "parked" where the map has a kerb: not a car waiting in a lane (if any is left); "the bike"
+// with no bicycle about: a motorbike is a bike too.
+void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::vector<Candidate>& cands,
+                     std::vector<const Candidate*>& m) {
+  // "parked" where the map has a kerb to park at: not a car waiting in a lane (if any is left).
+  if (t.parked && scene_has_parking(scene)) {
+    std::vector<const Candidate*> kerbside;
+    for (const auto* c : m)
+      if (!(c->lane.ego || c->lane.left || c->lane.middle || c->lane.right || c->lane.oncoming || c->lane.cross))
+        kerbside.push_back(c);
+    if (!kerbside.empty()) m = kerbside;
+  }
+  // "the bike" with no bicycle about: a motorbike is a bike too.
+  if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) {
+    Selector motorbike = t;
+    motorbike.category = "vehicle.motorcycle";
+    for (const auto& c : cands)
+      if (matches(motorbike, c)) m.push_back(&c);
+  }
+}
+
+// Of the matches, the kind the words say first: passenger cars for "car", tall ones for "SUV",
+// and the order asked ("the last", "the car behind me": the most nearly straight behind).
+void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
+  // "the white car", "both cars", "the cars parked on the left" mean passenger cars when any
+  // match, not the white bus; a bare "all cars" clears the road of every vehicle (the dev cases'
+  // reading).
+  const bool qualified = t.color || t.region || t.lane || t.road_side || t.moving || t.parked || t.approaching;
+  if ((t.quantity != "all" || qualified) && t.category == "vehicle" && t.noun.find("car") != std::string::npos) {
+    std::vector<const Candidate*> cars;
+    for (const auto* c : m)
+      if (c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency"))
+        cars.push_back(c);
+    if (!cars.empty()) m = cars;
+  }
+  // "the white SUV": of the cars that match, the tall ones.
+  if (t.noun == "suv" || t.noun == "suvs" || t.noun == "jeep" || t.noun == "crossover") {
+    std::vector<const Candidate*> tall;
+    for (const auto* c : m)
+      if (c->object->size_lwh.z() >= 1.65) tall.push_back(c);
+    if (!tall.empty()) m = tall;
+  }
+  if (t.order == "farthest") std::reverse(m.begin(), m.end());
+  // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.
+  if (!t.order && t.quantity == "one" && (t.region == "front" || t.region == "back"))
+    std::stable_sort(m.begin(), m.end(), [](const Candidate* a, const Candidate* b) {
+      return std::abs(a->pe.y()) + 0.1 * a->pe.norm() < std::abs(b->pe.y()) + 0.1 * b->pe.norm();
+    });
+}
+
+// "the bike in the bus lane": on a lane of that use. A map with no such lane says nothing either
+// way ("the cars waiting to turn left" on a road without turn lanes), so nothing is narrowed.
+void keep_on_lanes_of_use(const Selector& t, const scene::Scene& scene, std::vector<const Candidate*>& m) {
+  if (!t.lane_use) return;
+  const auto lanes = language::lanes_for_use(scene.lanes, *t.lane_use);
+  if (lanes.empty()) return;
+  std::erase_if(m, [&](const Candidate* c) { return std::find(lanes.begin(), lanes.end(), c->lane.own) == lanes.end(); });
+}
+
+}  // namespace
+
+Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, const std::vector<std::string>& removed) {
+  Selection out;
+  if (r.unsupported) {
+    out.problems.push_back("there is no " + *r.unsupported + " in the scene, and it is not something that can be selected");
+    return out;
+  }
+  const Eigen::Isometry3d to_ego = scene.world_to_ego0();
+  std::vector<Candidate> cands;
+  for (const auto& o : scene.objects) {
+    if (std::find(removed.begin(), removed.end(), o.id) != removed.end()) continue;
+    const auto p0 = o.at(0);
+    if (!p0) continue;
+    double speed = 0;
+    const int last = o.track.back().frame;
+    if (last > 0 && scene.frames.size() > size_t(last)) {
+      const double dt = scene.frames[size_t(last)].timestamp_s - scene.frames[0].timestamp_s;
+      if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
+    }
+    const double ego_turn = std::atan2(to_ego.linear()(1, 0), to_ego.linear()(0, 0));
+    cands.push_back({&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>()),
+                     p0->yaw + ego_turn});
+  }
+  std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.pe.norm() < b.pe.norm(); });
+  std::vector<std::string> chosen;
+  const Candidate* last = nullptr;  // what the phrase before chose ("... and the truck behind it")
+  for (const auto& t : r.targets) {
+    std::vector<const Candidate*> m;
+    for (const auto& c : cands)
+      if (matches(t, c)) m.push_back(&c);
+    keep_on_lanes_of_use(t, scene, m);
+    if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
+    widen_or_narrow(t, scene, cands, m);
+    if (m.empty()) {
+      out.problems.push_back("no " + describe(t).substr(t.quantity == "all" ? 6 : 4) + " in the scene" +
+                             (removed.empty() ? "" : " (or it was already removed)"));
+      continue;
+    }
+    prefer_said_kind(t, m);
+    last = m.front();
+    if (t.anchor_only) continue;
+    if (t.quantity == "all") {
+      for (const auto* c : m) chosen.push_back(c->object->id);
+    } else if (t.quantity == "n") {
+      for (size_t i = 0; i < m.size() && int(i) < t.n; ++i) chosen.push_back(m[i]->object->id);
+      if (int(m.size()) < t.n)
+        out.problems.push_back("asked for " + std::to_string(t.n) + " but the scene has only " + std::to_string(m.size()));
+    } else {
+      const size_t k = size_t(std::max(1, t.nth)) - 1;
+      if (k >= m.size()) {
+        out.problems.push_back("there is no " + describe(t).substr(4) + ": only " + std::to_string(m.size()) + " match");
+        continue;
+      }
+      chosen.push_back(m[k]->object->id);
+      last = m[k];
+    }
+  }
+  for (const auto& e : r.except)
+    for (const auto& c : cands)
+      if (matches(e, c)) chosen.erase(std::remove(chosen.begin(), chosen.end(), c.object->id), chosen.end());
+  for (const auto& c : cands)
+    if (std::find(chosen.begin(), chosen.end(), c.object->id) != chosen.end() &&
+        std::find(out.ids.begin(), out.ids.end(), c.object->id) == out.ids.end())
+      out.ids.push_back(c.object->id);
+  return out;
+}
+
+}  // namespace chatsim::agents::deletion

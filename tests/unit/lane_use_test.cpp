@@ -1,0 +1,114 @@
+// Lanes named by their use ("the bus lane", "the left-turn lane"), the vehicles nuScenes labels
+// that have no mesh (tractors, trailers), and rounds that go on from the one before. Each test is
+// a class of failure blind set v16 showed, not one of its cases.
+#include <algorithm>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "agents/asset/catalog.hpp"
+#include "agents/core/agent_registry.hpp"
+#include "agents/deletion/deletion.hpp"
+#include "agents/language/lane_names.hpp"
+#include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
+#include "agents/manager/decompose.hpp"
+#include "agents/motion/motion_intent.hpp"
+#include "agents/view/view.hpp"
+#include "common/scene/scene.hpp"
+
+using namespace chatsim;
+namespace fs = std::filesystem;
+
+namespace {
+
+scene::Lane straight(const std::string& id, double x0, double y0, double x1, double y1) {
+  scene::Lane l;
+  l.id = id;
+  l.centerline = {{x0, y0, 0}, {(x0 + x1) / 2, (y0 + y1) / 2, 0}, {x1, y1, 0}};
+  return l;
+}
+
+// Two through lanes east and a pocket opening off the left one at x=30 and ending at x=75.
+scene::LaneMap pocket_map(const std::string& pocket_id) {
+  auto pocket = straight(pocket_id, 30, 3.5, 40, 7);
+  pocket.centerline.push_back({75, 7, 0});
+  return scene::LaneMap({straight("east_kerb", -60, 0, 220, 0), straight("east_inner", -60, 3.5, 220, 3.5), pocket});
+}
+
+}  // namespace
+
+TEST(LaneUse, APocketOpeningOffALaneIsATurnLaneOnItsSide) {
+  const auto map = pocket_map("p7");
+  EXPECT_EQ(map.diverges(0), 0);  // through lanes start and end with the map
+  EXPECT_EQ(map.diverges(1), 0);
+  EXPECT_EQ(map.diverges(2), 1);  // opens to the left
+  EXPECT_EQ(agents::language::lanes_for_use(map, "turn_left"), std::vector<int>{2});
+  EXPECT_TRUE(agents::language::lanes_for_use(map, "turn_right").empty());
+  EXPECT_TRUE(agents::language::lanes_for_use(map, "bus").empty());
+  // A map that names its lanes is read by the names: "east_bus_lane" is the bus lane.
+  const scene::LaneMap named({straight("east_bus_lane", -60, -3.5, 220, -3.5), straight("lay_by", 5, -3, 30, -3)});
+  EXPECT_EQ(agents::language::lanes_for_use(named, "bus"), std::vector<int>{0});
+  EXPECT_EQ(named.named("by"), std::vector<int>{1});
+  EXPECT_TRUE(named.named("bu").empty());  // whole words only
+}
+
+TEST(LaneUse, ALaneNamedByItsUseIsAPlaceNotATurnASideOrAVehicle) {
+  using agents::language::find_lane_name;
+  EXPECT_EQ(find_lane_name(agents::text::words("in the left turn lane"))->use, "turn_left");
+  EXPECT_EQ(find_lane_name(agents::text::words("the bus lane"))->use, "bus");
+  EXPECT_FALSE(find_lane_name(agents::text::words("in the left lane")));
+  const auto taxi = agents::motion::parse_motion("put a taxi in the left turn lane behind the black suv");
+  EXPECT_EQ(taxi.lane_use, "turn_left");
+  EXPECT_NE(taxi.action, "turn_left");
+  EXPECT_FALSE(taxi.lane);
+  const auto bike = agents::deletion::parse_deletion("remove the bike in the bus lane");
+  ASSERT_EQ(bike.targets.size(), 1u);
+  EXPECT_EQ(bike.targets[0].category, "vehicle.bicycle");
+  EXPECT_EQ(bike.targets[0].lane_use, "bus");
+  const auto queue = agents::deletion::parse_deletion("remove both cars queuing to turn left");
+  ASSERT_EQ(queue.targets.size(), 1u);
+  EXPECT_EQ(queue.targets[0].lane_use, "turn_left");
+  EXPECT_FALSE(queue.targets[0].region);  // "left" is the turn's
+  EXPECT_EQ(agents::view::parse_view("move the camera into the bus lane").to_lane, "bus");
+}
+
+TEST(LaneUse, RemovingVehiclesDoingSomethingIsADeletionNotAnAbstractScene) {
+  for (const char* command : {"Remove both cars queuing to turn left.", "delete the cars stuck in traffic"}) {
+    const auto in = agents::manager::decompose(command);
+    ASSERT_EQ(in.size(), 1u) << command;
+    EXPECT_NE(in[0].kind, "traffic_jam") << command;
+  }
+  EXPECT_EQ(agents::manager::decompose("create a queue of cars at the lights")[0].kind, "traffic_jam");
+  EXPECT_EQ(agents::manager::decompose("Drive a lot faster.")[0].kind, "view");
+  EXPECT_EQ(agents::view::parse_view("drive a lot faster").ego_motion, "fast");
+}
+
+TEST(LaneUse, ConstructionVehiclesAndTrailersAreNamedAndAddedAsTrucks) {
+  const auto types = agents::lexicon::find_types(agents::text::words("take the tractor out"));
+  ASSERT_EQ(types.size(), 1u);
+  EXPECT_EQ(types[0].type.scene_prefix, "vehicle.construction");
+  EXPECT_EQ(agents::lexicon::find_types(agents::text::words("the caravan"))[0].type.type, "trailer");
+  const auto& catalog = agents::asset::Catalog::instance();
+  EXPECT_EQ(catalog.generic("construction").type, "truck");
+  EXPECT_EQ(catalog.generic("trailer").type, "truck");
+  // Coming toward the ego on the ego's side of the road is against its traffic.
+  EXPECT_TRUE(agents::motion::parse_motion("add a black audi speeding towards me on my side of the road").wrong_way);
+  EXPECT_FALSE(agents::motion::parse_motion("add a black audi driving away on my side of the road").wrong_way);
+}
+
+TEST(LaneUse, ARoundThatGoesOnFromTheLastTakesItsVerb) {
+  const fs::path scene_dir = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-turnpocket";
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  manager.chat("c", scene_dir.string(), "delete the motorbike");
+  const auto s = manager.chat("c", scene_dir.string(), "and the bike in the bus lane too").edit_state;
+  EXPECT_EQ(s["removed"], nlohmann::json({"obj_7", "obj_10"}));
+  EXPECT_TRUE(s["added"].empty());
+  // On its own, a vehicle with no verb is still an addition.
+  const auto fresh = manager.chat("d", scene_dir.string(), "a red car 20 m ahead").edit_state;
+  EXPECT_EQ(fresh["added"].size(), 1u);
+  // The view moves into the lane the map names.
+  const auto v = manager.chat("e", scene_dir.string(), "move the camera into the bus lane").edit_state;
+  EXPECT_NEAR(v["view"]["translation_m"][1].get<double>(), -3.5, 0.3);
+}
