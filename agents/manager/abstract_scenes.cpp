@@ -45,8 +45,15 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
     return intent;
   };
   if (in.kind == "traffic_jam") {
-    for (int k = 0; k < 8; ++k)
-      add(std::string(colors[k]) + " " + kinds[k], with_said({{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}}));
+    // Where recorded traffic in that lane would run into a queue close by (it cannot brake), the
+    // queue stands further up the road, beyond where that traffic gets to in the clip.
+    json at = with_said({{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}});
+    for (double further : {45.0, 75.0, 105.0, 135.0}) {
+      if (placed > 0 || said.contains("distance_m")) break;
+      add(std::string(colors[0]) + " " + kinds[0], at);
+      if (placed == 0) at["distance_m"] = further;
+    }
+    for (int k = placed; k < 8; ++k) add(std::string(colors[k]) + " " + kinds[k], at);
   } else if (in.kind == "busy_road") {
     static const char* where[] = {"front", "left_front", "back", "front", "left_front", "back", "front", "left_front", "front", "back"};
     // "on my side of the road": all of it the ego's way (away ahead of it, toward it behind).

@@ -35,12 +35,6 @@ bool refused_for_range(Conversation& c, const std::string& text, const json& int
 
 }  // namespace
 
-struct Manager::Round {
-  json instructions = json::array();
-  std::vector<std::string> done;
-  std::vector<int> added_now;
-};
-
 Manager::Manager(AgentCaller caller, std::shared_ptr<llm::Backend> backend)
     : caller_(std::move(caller)), backend_(std::move(backend)) {}
 
@@ -383,6 +377,7 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
     }
     if (replan_revised(c, t, said, in.text)) round.done.push_back("Revised " + v.id + ".");
   }
+  if (!changed_any && revise_count(c, in, targets, round)) return;
   if (!changed_any)
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "found nothing to change (colour, type, placement, speed or action)"}});
   c.last_ref = targets.back();

@@ -67,7 +67,12 @@ class Manager {
   void reset(const std::string& conversation_id);
 
  private:
-  struct Round;
+  // What one round did: its instructions, a line per change for the user, the vehicles it added.
+  struct Round {
+    nlohmann::json instructions = nlohmann::json::array();
+    std::vector<std::string> done;
+    std::vector<int> added_now;
+  };
   ChatResult run_round(Conversation& c, const std::string& scene_dir, const std::string& command);
   void run_instruction(Conversation& c, const Instruction& in, Round& round);
   void do_view(Conversation& c, const Instruction& in, Round& round);
@@ -77,6 +82,8 @@ class Manager {
   void do_add(Conversation& c, const Instruction& in, Round& round);
   void do_revise(Conversation& c, const Instruction& in, Round& round);
   bool replan_revised(Conversation& c, int index, const nlohmann::json& said, const std::string& text);
+  // "make it four" after two cones: as many of the group as said (group_count.cpp).
+  bool revise_count(Conversation& c, const Instruction& in, const std::vector<int>& targets, Round& round);
   void do_remove_added(Conversation& c, const Instruction& in, Round& round);
   void do_abstract(Conversation& c, const Instruction& in, Round& round);
   // Asks the motion agent for v's trajectory and stores it; false (and unresolved) when it

@@ -99,9 +99,12 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
   if (m_.lane == "cross" && m_.placement == "right") m_.placement = "right_front";
   // Per lane once, not per candidate start: whether the lane said ("the right lane") has a lane of
   // the ego's way beyond it on that side.
+  // A turn pocket or an on-ramp beside the ego is not "the left lane": it is no through lane.
   if (m_.lane == "left" || m_.lane == "right")
-    for (size_t li = 0; li < scene.lanes.lanes().size(); ++li)
+    for (size_t li = 0; li < scene.lanes.lanes().size(); ++li) {
       lane_beside_.push_back(same_way_lane_beside(int(li), m_.lane == "left" ? 1 : -1));
+      branch_.push_back(scene.lanes.diverges(int(li)) != 0 || scene.lanes.merges(int(li)));
+    }
   // "in the bus lane": the map's lanes of that use; a map without one leaves the start free.
   if (m_.lane_use) use_lanes_ = language::lanes_for_use(scene.lanes, *m_.lane_use);
   const auto ego_lane = scene.lanes.containing(ego_.p);

@@ -99,7 +99,7 @@ double Planner::said_lane_penalty(int lane, double s) const {
     const bool level = m_.placement == "left" || m_.placement == "right";
     const bool outermost_own =
         !level && std::abs(lat) <= 1.5 && same_way_as_ego(lane, s) && !lane_beside_[size_t(lane)];
-    return l.type == "driving" && (beside || outermost_own) ? 0 : 60;
+    return l.type == "driving" && (beside || outermost_own) && !branch_[size_t(lane)] ? 0 : 60;
   }
   if (*m_.lane == "cross") {  // a lane across the ego's: a side or cross street
     if (l.type != "driving" || std::abs(std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw))) >= 0.5) return 60;
@@ -107,7 +107,9 @@ double Planner::said_lane_penalty(int lane, double s) const {
     const bool turns_out = m_.action == "turn_left" || m_.action == "turn_right" || m_.action == "join";
     const double here = std::abs(ego_.to_ego(scene_.lanes.point_at(lane, s)).y());
     const double at_end = std::abs(ego_.to_ego(scene_.lanes.point_at(lane, l.length())).y());
-    return turns_out && at_end > here ? 60 : 0;
+    // Reversing out of it: facing up the street, on the lane leading away from the road.
+    const bool reverses_out = m_.action == "backward";
+    return (turns_out && at_end > here) || (reverses_out && at_end < here) ? 60 : 0;
   }
   return 0;
 }

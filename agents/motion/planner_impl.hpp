@@ -141,6 +141,7 @@ class Planner {
   double ego_speed_ = 0;              // the ego's mean recorded speed over the clip, m/s
   std::vector<bool> lane_beside_;     // "the left/right lane": a same-way lane beside each lane, that side
   std::vector<int> use_lanes_;        // "the bus lane": the lanes of the use said (lane_names.hpp)
+  std::vector<bool> branch_;          // with "the left/right lane": each lane a pocket or a ramp
 };
 
 }  // namespace chatsim::agents::motion::detail

@@ -112,3 +112,34 @@ TEST(LaneUse, ARoundThatGoesOnFromTheLastTakesItsVerb) {
   const auto v = manager.chat("e", scene_dir.string(), "move the camera into the bus lane").edit_state;
   EXPECT_NEAR(v["view"]["translation_m"][1].get<double>(), -3.5, 0.3);
 }
+
+TEST(LaneUse, DownTheSideStreetIsWhereItDrivesUnlessItTurns) {
+  EXPECT_EQ(agents::motion::parse_motion("add a fire engine coming down the side street on the left").lane, "cross");
+  EXPECT_EQ(agents::motion::parse_motion("add a van turning left down the side street").action, "turn_left");
+  EXPECT_EQ(agents::motion::parse_motion("add a van reversing out of the side street").action, "backward");
+  EXPECT_EQ(agents::motion::parse_motion("add a truck in the kerb lane").lane_edge, "outer");
+  EXPECT_EQ(agents::motion::parse_motion("have it pull out and drive off").direction, "away");
+}
+
+TEST(LaneUse, ACountRevisionResizesTheGroupAddedLast) {
+  const fs::path scene_dir = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-sbend";
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  EXPECT_EQ(manager.chat("c", scene_dir.string(), "Add two cones in the lay-by.").edit_state["added"].size(), 2u);
+  const auto more = manager.chat("c", scene_dir.string(), "Actually make it four.").edit_state;
+  ASSERT_EQ(more["added"].size(), 4u);
+  for (const auto& a : more["added"]) EXPECT_EQ(a["intent"]["lane"], "lay_by");
+  EXPECT_EQ(manager.chat("c", scene_dir.string(), "make it just one").edit_state["added"].size(), 1u);
+  // A number with a unit is no count.
+  const auto moved = manager.chat("c", scene_dir.string(), "make it 5 m further away").edit_state;
+  EXPECT_EQ(moved["added"].size(), 1u);
+}
+
+TEST(LaneUse, AJamWhereRecordedTrafficComesStandsBeyondItsReachOnTheThroughLane) {
+  const fs::path scene_dir = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-turnpocket";
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  const auto s = manager.chat("c", scene_dir.string(), "Create a traffic jam in the left lane.").edit_state;
+  ASSERT_GE(s["added"].size(), 3u);
+  for (const auto& a : s["added"]) EXPECT_EQ(a["intent"]["lane"], "east_left");  // not the turn pocket
+}
