@@ -441,7 +441,34 @@ def s_bend():
           "to the right, oncoming lane drawn backward", lanes, ego, 9, objects)
 
 
+def lht_exit():
+    """Left-hand traffic dual carriageway: eastbound a kerbside bus lane (y=3.5, the left), the ego's
+    lane (y=0) and an overtaking lane (y=-3.5); a median; westbound two lanes (y=-11, -14.5). An exit
+    slip road leaves from the left at x=60; a two-way service road (direction "both") runs behind a
+    verge on the left (y=13) with a car parked on it."""
+    east = lambda y: line(-60, y, 240, y)
+    west = lambda y: line(240, y, -60, y)
+    slip = [[60.0, 3.5, 0.0], [75.0, 5.5, 0.0], [90.0, 9.5, 0.0], [110.0, 17.0, 0.0], [140.0, 30.0, 0.0], [170.0, 43.0, 0.0]]
+    lanes = [lane("eb_bus_lane", east(3.5)), lane("eb_lane_1", east(0)), lane("eb_lane_2", east(-3.5)),
+             lane("exit_slip", slip), lane("wb_lane_2", west(-11)), lane("wb_lane_1", west(-14.5)),
+             dict(lane("service_road", line(-60, 13, 100, 13), 4.0), direction="both")]
+    objects = [obj(1, "vehicle.bus.rigid", static(40, 3.5), "red"),
+               obj(2, "vehicle.truck", track_along(east(-3.5), 90, 10), "white"),
+               obj(3, "vehicle.car", track_along(slip, 5, 9), "blue"),
+               obj(4, "vehicle.motorcycle", track_along(east(0), 45, 12), "black"),
+               obj(5, "vehicle.car", track_along(west(-11), 130, 14), "silver"),
+               obj(6, "vehicle.car", track_along(west(-14.5), 60, 11), "green"),
+               obj(7, "vehicle.car", static(20, 13), "yellow", SIZES["suv"]),
+               obj(8, "vehicle.bicycle", track_along(line(100, 12, -60, 12), 70, 4), "orange"),
+               obj(9, "vehicle.car", track_along(east(0), 110, 11), "grey"),
+               obj(10, "human.pedestrian.adult", static(38, 6.5)),
+               obj(11, "vehicle.emergency.police", track_along(east(-3.5), 30, 14), "white")]
+    write("blind-lhtexit", "hand-made layout: left-hand traffic dual carriageway, a kerbside bus lane with a bus "
+          "at a stop, an exit slip road to the left, a two-way service road behind a verge", lanes, east(0), 11, objects)
+
+
 if __name__ == "__main__":
+    lht_exit()
     turn_pocket()
     s_bend()
     left_hand()
