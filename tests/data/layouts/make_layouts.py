@@ -459,7 +459,7 @@ def lht_exit():
                obj(5, "vehicle.car", track_along(west(-11), 130, 14), "silver"),
                obj(6, "vehicle.car", track_along(west(-14.5), 60, 11), "green"),
                obj(7, "vehicle.car", static(20, 13), "yellow", SIZES["suv"]),
-               obj(8, "vehicle.bicycle", track_along(line(100, 12, -60, 12), 70, 4), "orange"),
+               obj(8, "vehicle.bicycle", track_along(line(100, 14.5, -60, 14.5), 70, 4), "orange"),
                obj(9, "vehicle.car", track_along(east(0), 110, 11), "grey"),
                obj(10, "human.pedestrian.adult", static(38, 6.5)),
                obj(11, "vehicle.emergency.police", track_along(east(-3.5), 30, 14), "white")]
