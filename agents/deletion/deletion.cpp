@@ -53,12 +53,15 @@ int ordinal(const std::string& w) {
 
 // "the tractor": an English noun the interpreter does not know where the thing to delete is
 // named; nothing in a scene is one, so the request is refused rather than guessed.
-std::optional<std::string> unknown_head(const Words& p) {
-  if (!lexicon::find_types(p).empty()) return std::nullopt;
+std::optional<std::string> unknown_head(const Words& said) {
+  if (!lexicon::find_types(said).empty()) return std::nullopt;
+  Words p = said;  // "clear the service road": a lane's name is no thing to delete
+  if (const auto name = language::find_lane_name(said))
+    for (size_t k = name->begin; k < name->end; ++k) p[k] = "_";
   for (const auto& word : p) {
     static const char* skip[] = {"the", "a", "an", "that", "this", "those", "these", "every", "all", "each", "any", "my",
                                  "too", "also", "well", "instead", "again", "please", "now", "then", "there", "here",
-                                 "thanks", "thank", "you", "anyway"};
+                                 "thanks", "thank", "you", "anyway", "_"};
     static const char* pronouns[] = {"whatever", "anything", "something", "whichever", "everything", "one", "ones"};
     if (std::find(std::begin(pronouns), std::end(pronouns), word) != std::end(pronouns)) return std::nullopt;
     if (std::find(std::begin(skip), std::end(skip), word) != std::end(skip) || lexicon::is_color_word(word) ||
@@ -76,9 +79,12 @@ std::optional<std::string> unknown_head(const Words& p) {
 std::optional<std::string> lane_words(const Words& p) {
   if (text::has_any(p, {"my lane", "our lane", "same lane", "ego lane", "this lane"})) return "ego";
   if (text::has_any(p, {"middle lane", "center lane", "central lane"})) return "middle";
-  if (text::has_any(p, {"left lane", "left hand lane", "fast lane", "outside lane", "passing lane", "overtaking lane"}))
-    return "left";
-  if (text::has_any(p, {"right lane", "right hand lane", "slow lane", "inside lane", "nearside lane"})) return "right";
+  // The fast lane is next to the other way's traffic: the left one where traffic keeps right.
+  if (text::has_any(p, {"fast lane", "outside lane", "passing lane", "overtaking lane", "offside lane", "inner lane"}))
+    return "inner";
+  if (text::has_any(p, {"slow lane", "inside lane", "nearside lane", "curb lane", "outer lane"})) return "outer";
+  if (text::has_any(p, {"left lane", "left hand lane"})) return "left";
+  if (text::has_any(p, {"right lane", "right hand lane"})) return "right";
   if (text::has_any(p, {"oncoming", "other carriageway", "opposite carriageway", "opposite direction",
                         "other direction", "the other way", "coming toward", "toward me", "toward us", "coming at me",
                         "coming at us"}))
@@ -86,11 +92,12 @@ std::optional<std::string> lane_words(const Words& p) {
   // "at the crossing" is a place; "the person crossing the road" says what the person does.
   if (text::has_any(p, {"side street", "side road", "cross street", "crossroads", "junction", "intersection",
                         "the crossing", "a crossing", "cross traffic", "side streets", "farm track", "dirt track",
-                        "dirt road", "track", "alley", "alleyway", "driveway", "access road", "service road"}))
+                        "dirt road", "track", "alley", "alleyway", "driveway"}))
     return "cross";
   if (text::has_any(p, {"parking lane", "parking bay", "bus bay", "bus stop", "parking spot", "parking space"}))
     return "parking";
-  if (text::has_any(p, {"slip road", "on ramp", "ramp", "merging lane", "acceleration lane", "entry lane", "joining"}))
+  if (text::has_any(p, {"slip road", "on ramp", "ramp", "merging lane", "acceleration lane", "entry lane", "joining",
+                        "the exit", "an exit", "exit lane", "off ramp", "exiting", "leaving the road"}))
     return "ramp";
   if (text::has_any(p, {"hard shoulder", "shoulder", "verge", "emergency lane", "roadside"})) return "shoulder";
   return std::nullopt;

@@ -89,15 +89,21 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   }
   r.ego = own == ego_lane;
   r.near_side = true;
-  if (lanes.merges(own)) {  // not one of the road's own lanes
+  if (lanes.merges(own) || lanes.diverges(own) != 0) {  // an on-ramp or an exit: not one of the road's own lanes
     r.ramp = true;
     return r;
   }
   // Same-direction driving lanes beside the object's, by which side of it they lie.
-  int to_left = 0, to_right = 0;
+  int to_left = 0, to_right = 0, oncoming_side = 0;
+  const double own_yaw = lanes.travel_yaw_at(own, lanes.project(own, p).s);
+  const Eigen::Vector2d own_left(-std::sin(own_yaw), std::cos(own_yaw));
   for (size_t i = 0; i < lanes.lanes().size(); ++i) {
     if (int(i) == own || lanes.lanes()[i].type != "driving") continue;
     const auto pos = lanes.project(int(i), p);
+    // Which side the other way's traffic passes on (+1 left): the fast lane is the one next to it.
+    if (std::abs(pos.lateral) <= 25 && pos.s > 0.5 && pos.s < lanes.lanes()[i].length() - 0.5 &&
+        same_way(int(i), pos.s) > 3 * kPi / 4)
+      oncoming_side = own_left.dot(lanes.point_at(int(i), pos.s) - p) > 0 ? 1 : -1;
     if (std::abs(pos.lateral) > 12 || same_way(int(i), pos.s) > kPi / 4) continue;
     if (pos.s <= 0.5 || pos.s >= lanes.lanes()[i].length() - 0.5) continue;  // beside it, not beyond its end
     if (pos.lateral > 1.5) ++to_right;  // p lies left of lane i: lane i is to its right
@@ -105,6 +111,9 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   }
   r.left = to_left == 0;
   r.right = to_right == 0;
+  // With no other way's lanes beside (a one-way street), the fast lane is on the left.
+  r.inner = oncoming_side < 0 ? r.right : r.left;
+  r.outer = oncoming_side < 0 ? r.left : r.right;
   r.middle = to_left > 0 && to_right > 0;
   return r;
 }
@@ -114,6 +123,8 @@ bool has_lane(const LaneRelation& r, const std::string& lane) {
   if (lane == "left") return r.left;
   if (lane == "middle") return r.middle;
   if (lane == "right") return r.right;
+  if (lane == "inner") return r.inner;
+  if (lane == "outer") return r.outer;
   if (lane == "oncoming") return r.oncoming;
   if (lane == "cross") return r.cross;
   if (lane == "parking") return r.parking;

@@ -16,10 +16,12 @@ struct LaneRelation {
   bool left = false;      // leftmost lane of the ego's direction (with one lane: left and right)
   bool middle = false;    // lanes on both sides in the same direction
   bool right = false;     // rightmost lane of the ego's direction
+  bool inner = false;     // the ego's direction's lane next to the other way's (the fast lane)
+  bool outer = false;     // and the one farthest from it (the slow lane, by the kerb)
   bool oncoming = false;  // a lane travelled against the ego's direction
   bool cross = false;     // a lane across the ego's (side street, cross street)
   bool parking = false;   // a parking lane or bay
-  bool ramp = false;      // a lane that ends by merging into one beside it (an on-ramp, slip road)
+  bool ramp = false;      // a lane that merges into one beside it or opens off it (an on-ramp, an exit)
   bool shoulder = false;  // on no lane, beside a driving one (the hard shoulder, the verge)
   // Which half of the road: the ego's (its direction's lanes and the kerb beside them) or the far
   // one (the oncoming lanes and beyond). Neither on a side street or a one-way street's kerbs.
@@ -31,7 +33,7 @@ struct LaneRelation {
 LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p);
 
 // Whether a relation has the lane word a selector asks for (ego, left, middle, right, oncoming,
-// cross, parking, ramp, shoulder), or the road side (near, far).
+// inner, outer, cross, parking, ramp, shoulder), or the road side (near, far).
 bool has_lane(const LaneRelation& r, const std::string& lane);
 
 }  // namespace chatsim::agents::deletion

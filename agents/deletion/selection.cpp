@@ -163,6 +163,14 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     std::vector<const Candidate*> m;
     for (const auto& c : cands)
       if (matches(t, c)) m.push_back(&c);
+    // "the bus at the bus stop" where the stop is part of a driving lane: a map with no parking
+    // lane says nothing about the place either way.
+    if (m.empty() && t.lane == "parking" && !scene_has_parking(scene)) {
+      Selector anywhere = t;
+      anywhere.lane.reset();
+      for (const auto& c : cands)
+        if (matches(anywhere, c)) m.push_back(&c);
+    }
     keep_on_lanes_of_use(t, scene, m);
     if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
     widen_or_narrow(t, scene, cands, m);

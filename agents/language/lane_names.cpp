@@ -1,6 +1,8 @@
 #include "agents/language/lane_names.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <iterator>
 
 namespace chatsim::agents::language {
 namespace {
@@ -25,10 +27,37 @@ std::vector<std::string> id_words(const std::string& role) {
   return {role};
 }
 
+// Words before "lane", "road" or "track" that say where or which, not what the lane is for: the
+// interpreter reads them itself ("the left lane", "the side road", "the slip road").
+bool says_where(const std::string& w) {
+  static const char* kWords[] = {
+      "left", "right", "middle", "center", "my", "our", "same", "this", "that", "the", "a", "an", "other", "oncoming",
+      "opposite", "opposing", "fast", "slow", "inner", "outer", "inside", "outside", "overtaking", "passing", "parking",
+      "ego", "next", "adjacent", "main", "side", "cross", "slip", "merging", "acceleration", "entry", "exit", "curb",
+      "nearside", "offside", "hard", "emergency", "current", "wrong", "far", "near", "dirt", "country", "whole", "empty",
+      "busy", "open", "closed", "each", "every", "first", "second", "third", "last", "one", "two", "three", "own", "new",
+      "nearest", "closest", "narrow", "wide", "single", "double", "its", "their", "his", "her", "to", "of", "in", "on",
+      "hand"};
+  // "right-hand", "left-most": any part of a hyphenated word.
+  size_t from = 0;
+  while (from <= w.size()) {
+    const size_t dash = std::min(w.find('-', from), w.size());
+    const std::string part = w.substr(from, dash - from);
+    if (std::any_of(std::begin(kWords), std::end(kWords), [&](const char* k) { return part == k; })) return true;
+    from = dash + 1;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
   for (size_t i = 1; i < w.size(); ++i) {
+    // "the service road", "the farm track": a name the map's lane ids may use.
+    if ((w[i] == "road" || w[i] == "track" || w[i] == "lane") && !says_where(w[i - 1]) &&
+        std::none_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return w[i - 1] == r.word; }) &&
+        std::isalpha(static_cast<unsigned char>(w[i - 1].front())))
+      return LaneName{w[i - 1], i - 1, i + 1};
     if (w[i] != "lane" && w[i] != "lanes" && w[i] != "pocket") continue;
     for (const auto& r : kRoles) {
       if (w[i - 1] != r.word) continue;

@@ -10,7 +10,8 @@
 
 namespace chatsim::agents::language {
 
-// A lane's use as the agents pass it on: bus, turn, turn_left, turn_right, cycle, tram, taxi, hov.
+// A lane's use as the agents pass it on: bus, turn, turn_left, turn_right, cycle, tram, taxi, hov,
+// or a word of the map's own ("service" for "the service road", "farm" for "the farm track").
 struct LaneName {
   std::string use;
   size_t begin = 0;   // the words naming it, [begin, end)
@@ -21,7 +22,7 @@ struct LaneName {
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w);
 
 // The map's lanes of that use: those whose id has the use's word; for turn lanes, with no such
-// id, the lanes that open off another (on the side said).
+// id, the lanes that open off another (on the side said). None: the map does not name it.
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use);
 
 }  // namespace chatsim::agents::language

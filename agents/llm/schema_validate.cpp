@@ -38,6 +38,13 @@ std::string validate(const nlohmann::json& v, const nlohmann::json& schema, cons
     if (schema.contains("maximum") && v.get<double>() > schema["maximum"].get<double>())
       return path + ": " + v.dump() + " is above the maximum " + schema["maximum"].dump();
   }
+  if (v.is_string()) {  // lengths in bytes: the schemas' strings are ASCII words
+    const size_t n = v.get_ref<const std::string&>().size();
+    if (schema.contains("minLength") && n < schema["minLength"].get<size_t>())
+      return path + ": " + v.dump() + " is shorter than " + schema["minLength"].dump() + " characters";
+    if (schema.contains("maxLength") && n > schema["maxLength"].get<size_t>())
+      return path + ": " + v.dump() + " is longer than " + schema["maxLength"].dump() + " characters";
+  }
   if (v.is_object()) {
     for (const auto& r : schema.value("required", nlohmann::json::array()))
       if (!v.contains(r.get<std::string>())) return path + ": missing required field '" + r.get<std::string>() + "'";

@@ -341,9 +341,12 @@ Instruction classify(const Words& c_in) {
   // "look behind", "turn around": with no vehicle named, the view turns.
   const bool view_idiom = !vehicle && !added_ref &&
                           has_any(c, {"look behind", "look back", "look backward", "look backwards", "turn around",
-                                      "face backward", "face backwards", "look the other way", "face the other way"});
-  // "drive a lot faster", "go slower": an order to drive, with no vehicle to drive, is the ego's.
-  const bool ego_drives = !vehicle && !added_ref && c.size() > 1 && has_any({c.front()}, {"drive", "go", "speed"}) &&
+                                      "face backward", "face backwards", "look the other way", "face the other way",
+                                      "look left", "look right", "look to the left", "look to the right", "face left",
+                                      "face right"});
+  // "drive a lot faster", "crawl along slowly": an order to drive, with no vehicle to drive, is the ego's.
+  const bool ego_drives = !vehicle && !added_ref && c.size() > 1 &&
+                          has_any({c.front()}, {"drive", "go", "speed", "crawl", "cruise", "roll"}) &&
                           has_any(c, {"faster", "slower", "slowly", "quickly", "fast", "slow", "speed up", "slow down"});
   const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
                           has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom || ego_drives;

@@ -59,8 +59,7 @@ std::optional<std::string> find_lane(const Words& w_in) {
                   "the other way", "opposite direction", "other direction", "far side", "other side of the street"}))
     return "oncoming";
   if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane",
-                  "farm track", "dirt track", "dirt road", "track", "alley", "alleyway", "driveway", "access road",
-                  "service road", "slip lane"}))
+                  "farm track", "dirt track", "dirt road", "track", "alley", "alleyway", "driveway", "slip lane"}))
     return "cross";
   if (has_any(w, {"on ramp", "slip road", "ramp", "merging lane", "acceleration lane", "entry lane"})) return "ramp";
   if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot",

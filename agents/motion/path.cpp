@@ -81,7 +81,7 @@ void append_hermite(Path& path, const Eigen::Vector2d& to, double to_yaw, double
 
 // How far from a lane's centreline a side street may start and still be turned into from it:
 // across two more lanes and a parking lane.
-constexpr double kJunctionReachM = 12.0;
+constexpr double kJunctionReachM = 18.0;
 
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length) {
   const double travel_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);

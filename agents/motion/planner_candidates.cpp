@@ -186,7 +186,13 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
   std::vector<Candidate> out;
   const auto edge_penalty = lane_edge_penalties();
   const std::string placement = m_.placement.value_or("front");
-  const Region region = region_for(placement, m_, widen_);
+  Region region = region_for(placement, m_, widen_);
+  // "on the farm track", "in the bus lane" with no side or distance: wherever that lane is ahead.
+  if (!use_lanes_.empty() && placement == "front" && !m_.distance_m) {
+    region.a_min = std::min(region.a_min, -75.0);
+    region.a_max = std::max(region.a_max, 75.0);
+    region.d_max = std::max(region.d_max, 120.0);
+  }
   const auto& lanes = scene_.lanes.lanes();
   for (size_t li = 0; li < lanes.size(); ++li) {
     const auto& lane = lanes[li];

@@ -41,6 +41,16 @@ bool directions_lead(const Words& w, const std::vector<text::Quantity>& distance
 
 // "three metres up and two to the left": a bare number after a distance takes its unit.
 Words with_units(Words w) {
+  static const std::initializer_list<std::string_view> kUnits = {"meters", "meter", "m", "feet", "foot", "ft",
+                                                                  "centimeters", "cm", "lanes", "lane"};
+  // "back ten metres and up one": the number after the direction word.
+  for (size_t i = 1; i + 1 < w.size(); ++i) {
+    size_t used = 0;
+    if (w[i - 1] != "and" || !direction_word(w[i]) || !text::number_at(w, i + 1, &used) || used != 1) continue;
+    if (i + 2 < w.size() && text::has_any({w[i + 2]}, kUnits)) continue;
+    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)), kUnits);
+    if (!before.empty()) w.insert(w.begin() + long(i) + 2, w[before.back().end - 1]);
+  }
   for (size_t i = 1; i + 1 < w.size(); ++i) {
     size_t used = 0;
     if (w[i - 1] != "and" || !text::number_at(w, i, &used) || used != 1) continue;
@@ -172,7 +182,10 @@ ViewChange parse_view(const std::string& instruction) {
   // "over to the oncoming lane", "into the left lane": a lane of the map, found with the scene.
   for (const auto& [phrase, lane] : {std::pair{"oncoming lane", "oncoming"}, std::pair{"opposite lane", "oncoming"},
                                      std::pair{"other side of the road", "oncoming"}, std::pair{"left lane", "left"},
-                                     std::pair{"right lane", "right"}, std::pair{"parking lane", "parking"}})
+                                     std::pair{"right lane", "right"}, std::pair{"parking lane", "parking"},
+                                     std::pair{"overtaking lane", "inner"}, std::pair{"fast lane", "inner"},
+                                     std::pair{"passing lane", "inner"}, std::pair{"slow lane", "outer"},
+                                     std::pair{"curb lane", "outer"}})
     if (const size_t at = text::find_phrase(w, phrase);
         at != std::string::npos && at >= 2 && (w[at - 1] == "the" || w[at - 1] == "an") &&
         (w[at - 2] == "to" || w[at - 2] == "into" || w[at - 2] == "in" || w[at - 2] == "onto"))
@@ -200,7 +213,7 @@ ViewChange parse_view(const std::string& instruction) {
                                       "facing backward", "facing backwards", "look the other way", "face the other way",
                                       "rear view", "rearward", "view around", "camera around", "about face"}))
     v.yaw_deg = 180;
-  if (text::has_any(w, {"ego", "drive", "drives", "driving", "i drive", "we drive"}) &&
+  if (text::has_any(w, {"ego", "drive", "drives", "driving", "i drive", "we drive", "crawl", "cruise", "roll"}) &&
       !text::has_any(w, {"camera", "view", "viewpoint"})) {
     if (text::has_any(w, {"slowly", "slow", "crawl"})) v.ego_motion = "slow";
     else if (text::has_any(w, {"fast", "quickly", "speed", "rapidly", "faster"})) v.ego_motion = "fast";
@@ -282,6 +295,9 @@ ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, doub
     change.toward_kerb_m.reset();
   }
   if (change.to_lane) {
+    // The fast lane is next to the other way's traffic: on the right where traffic keeps left.
+    if (change.to_lane == "inner" || change.to_lane == "outer")
+      change.to_lane = (change.to_lane == "inner") != keeps_left(scene) ? "left" : "right";
     if (const auto target = lane_offset(scene, *change.to_lane)) {
       if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
       (*change.translation_m)[1] = *target - current_y_m;

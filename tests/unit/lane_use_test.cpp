@@ -143,3 +143,32 @@ TEST(LaneUse, AJamWhereRecordedTrafficComesStandsBeyondItsReachOnTheThroughLane)
   ASSERT_GE(s["added"].size(), 3u);
   for (const auto& a : s["added"]) EXPECT_EQ(a["intent"]["lane"], "east_left");  // not the turn pocket
 }
+
+// Blind set v17's classes, on its left-hand-traffic layout: which lane is the fast one, a lane
+// the map names in its own words, exits, a stop with no parking lane, bare numbers and ego orders.
+TEST(LaneUse, TheFastLaneIsNextToTheOtherWaysTrafficOnEitherSideOfTheRoad) {
+  const fs::path lht = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-lhtexit";
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  const auto chat = [&](const std::string& id, const std::string& command) {
+    return manager.chat(id, lht.string(), command).edit_state;
+  };
+  EXPECT_EQ(chat("a", "get rid of the lorry in the overtaking lane")["removed"], nlohmann::json({"obj_2"}));
+  EXPECT_NEAR(chat("b", "Put the view in the overtaking lane.")["view"]["translation_m"][1].get<double>(), -3.5, 0.3);
+  EXPECT_EQ(chat("c", "Delete the cyclist on the service road.")["removed"], nlohmann::json({"obj_8"}));
+  EXPECT_EQ(chat("d", "Delete the car taking the exit.")["removed"], nlohmann::json({"obj_3"}));
+  EXPECT_EQ(chat("e", "Remove the bus at the bus stop.")["removed"], nlohmann::json({"obj_1"}));
+  const auto v = chat("f", "Pull the camera back ten metres and up one.")["view"]["translation_m"];
+  EXPECT_EQ(v, nlohmann::json({-10.0, 0.0, 1.0}));
+  // A word the map does not use names nothing, and narrows nothing.
+  EXPECT_TRUE(agents::language::lanes_for_use(scene::load_scene(lht).lanes, "ring").empty());
+  EXPECT_FALSE(agents::language::find_lane_name(agents::text::words("the right-hand lane")));
+  EXPECT_EQ(agents::language::find_lane_name(agents::text::words("on the service road"))->use, "service");
+}
+
+TEST(LaneUse, OrdersToDriveOrLookWithNoVehicleAreTheViews) {
+  EXPECT_EQ(agents::manager::decompose("crawl along slowly")[0].kind, "view");
+  EXPECT_EQ(agents::view::parse_view("crawl along slowly").ego_motion, "slow");
+  EXPECT_EQ(agents::manager::decompose("Look left, towards the side street.")[0].kind, "view");
+  EXPECT_DOUBLE_EQ(*agents::view::parse_view("look left toward the side street").yaw_deg, 90);
+}
