@@ -467,7 +467,32 @@ def lht_exit():
           "at a stop, an exit slip road to the left, a two-way service road behind a verge", lanes, east(0), 11, objects)
 
 
+def roundabout():
+    """A two-way road (one lane each way) into a roundabout centred 90 m ahead (radius 14 m,
+    counter-clockwise), with arms north, east and south; no parking."""
+    cx, cy, r = 90.0, 1.75, 14.0
+    ring = [[round(cx + r * math.cos(math.radians(a)), 3), round(cy + r * math.sin(math.radians(a)), 3), 0.0]
+            for a in range(-180, 181, 10)]
+    lanes = [lane("west_in", line(-60, 0, 70, 0)), lane("west_out", line(70, 3.5, -60, 3.5)),
+             lane("east_in", line(220, 3.5, 110, 3.5)), lane("east_out", line(110, 0, 220, 0)),
+             lane("north_in", line(88.25, 120, 88.25, 21.75)), lane("north_out", line(91.75, 21.75, 91.75, 120)),
+             lane("south_in", line(91.75, -120, 91.75, -18.25)), lane("south_out", line(88.25, -18.25, 88.25, -120)),
+             lane("roundabout", ring)]
+    objects = [obj(1, "vehicle.car", track_along(ring, 20, 6), "red"),
+               obj(2, "vehicle.truck", track_along(line(220, 3.5, 110, 3.5), 40, 5), "blue"),
+               obj(3, "vehicle.bus.rigid", track_along(line(91.75, 21.75, 91.75, 120), 5, 7), "green"),
+               obj(4, "vehicle.car", static(88.25, 30, -math.pi / 2), "black"),
+               obj(5, "vehicle.bicycle", track_along(line(-60, 0, 70, 0), 45, 4), "yellow"),
+               obj(6, "vehicle.car", track_along(line(-60, 0, 70, 0), 90, 4), "white"),
+               obj(7, "human.pedestrian.adult", track_along(line(64, -5, 64, 9), 0, 1.0)),
+               obj(8, "vehicle.car", track_along(line(70, 3.5, -60, 3.5), 10, 9), "silver"),
+               obj(9, "vehicle.motorcycle", track_along(line(91.75, -120, 91.75, -18.25), 50, 5), "orange")]
+    write("blind-roundabout", "hand-made layout: a two-way road into a roundabout 90 m ahead with three more arms",
+          lanes, line(-60, 0, 70, 0), 5, objects)
+
+
 if __name__ == "__main__":
+    roundabout()
     lht_exit()
     turn_pocket()
     s_bend()
