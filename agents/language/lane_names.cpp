@@ -24,6 +24,7 @@ std::vector<std::string> id_words(const std::string& role) {
   if (role == "turn") return {"turn", "turning", "pocket", "filter"};
   if (role == "cycle") return {"cycle", "bike", "bicycle"};
   if (role == "hov") return {"hov", "carpool"};
+  if (role == "roundabout") return {"roundabout", "ring", "circle", "rotary", "circulatory"};
   return {role};
 }
 
@@ -52,6 +53,12 @@ bool says_where(const std::string& w) {
 }  // namespace
 
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
+  // "on the roundabout", "going round the roundabout": its ring, not "at the roundabout" (a junction).
+  for (size_t i = 2; i < w.size(); ++i)
+    if ((w[i] == "roundabout" || w[i] == "rotary") && w[i - 1] == "the" &&
+        (w[i - 2] == "on" || w[i - 2] == "round" || w[i - 2] == "around" || w[i - 2] == "in" || w[i - 2] == "onto" ||
+         w[i - 2] == "circling"))
+      return LaneName{"roundabout", i - 1, i + 1};
   for (size_t i = 1; i < w.size(); ++i) {
     // "the service road", "the farm track": a name the map's lane ids may use.
     if ((w[i] == "road" || w[i] == "track" || w[i] == "lane") && !says_where(w[i - 1]) &&
@@ -82,6 +89,12 @@ std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use
   for (const auto& word : id_words(turn ? "turn" : use))
     for (int lane : map.named(word))
       if (std::find(out.begin(), out.end(), lane) == out.end()) out.push_back(lane);
+  // A roundabout the ids do not name: a lane whose centreline closes on itself.
+  if (out.empty() && use == "roundabout")
+    for (size_t i = 0; i < map.lanes().size(); ++i) {
+      const auto& c = map.lanes()[i].centerline;
+      if (c.size() > 3 && (c.front() - c.back()).head<2>().norm() < 1.0) out.push_back(int(i));
+    }
   if (!out.empty() || !turn) return out;
   for (size_t i = 0; i < map.lanes().size(); ++i) {
     const int opens = map.diverges(int(i));

@@ -451,9 +451,15 @@ std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {
                                  "rocket", "submarine", "saucer", "saucers", "hovercraft", "blimp", "zeppelin",
                                  "elephant", "giraffe", "unicorn", "dragon", "tree", "trees",
                                  "house", "houses", "building", "buildings"};
-  for (const auto& word : w)
+  // "a horse box trailer", "a boat trailer": a noun right before a vehicle noun says what kind of
+  // vehicle, not what is added.
+  const auto vehicles = find_types(w);
+  for (size_t i = 0; i < w.size(); ++i)
     for (const char* n : kNouns)
-      if (word == n) return word;
+      if (w[i] == n && std::none_of(vehicles.begin(), vehicles.end(), [&](const TypeMention& t) {
+            return t.begin > i && t.begin <= i + 2 && t.type.type != "object" && t.type.type != "pedestrian";
+          }))
+        return w[i];
   return std::nullopt;
 }
 

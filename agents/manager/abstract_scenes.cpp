@@ -74,10 +74,15 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
       add("road barrier", with_said({{"placement", k == 1 ? "left_front" : "front"}, {"distance_m", at - 5.0 - 2.5 * (k / 2)},
                                      {"action", "static"}}));
   } else {
-    const double first = said.value("distance_m", 14.0);
-    for (int k = 0; k < 6; ++k)
-      add(k < 4 ? "traffic cone" : "road barrier",
-          with_said({{"placement", "front"}, {"distance_m", first + 3.0 * k}, {"action", "static"}}));
+    // As for a jam: where recorded traffic would run into works close by, they stand further up.
+    double first = said.value("distance_m", 14.0);
+    const auto cone_at = [&](double d) { return with_said({{"placement", "front"}, {"distance_m", d}, {"action", "static"}}); };
+    for (double further : {30.0, 50.0, 70.0}) {
+      add("traffic cone", cone_at(first));
+      if (placed > 0 || said.contains("distance_m")) break;
+      first = further;
+    }
+    for (int k = placed > 0 ? 1 : 0; k < 6; ++k) add(k < 4 ? "traffic cone" : "road barrier", cone_at(first + 3.0 * k));
   }
   if (placed == 0)
     c.unresolved.push_back({{"instruction", in.text},

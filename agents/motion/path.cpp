@@ -83,7 +83,60 @@ void append_hermite(Path& path, const Eigen::Vector2d& to, double to_yaw, double
 // across two more lanes and a parking lane.
 constexpr double kJunctionReachM = 18.0;
 
+namespace {
+
+bool closes_on_itself(const scene::Lane& l) {
+  return l.centerline.size() > 3 && (l.centerline.front() - l.centerline.back()).head<2>().norm() < 1.0;
+}
+
+// A turn at a roundabout: the ring the lane runs into, followed its way round to the first exit
+// leaving the way the turn goes (left +90 deg, right -90 deg from the way in), then that exit.
+std::optional<TurnPlan> roundabout_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign,
+                                        double length) {
+  const auto& in = map.lanes()[size_t(lane)];
+  const double end_s = dir > 0 ? in.length() : 0.0, ahead = dir * (end_s - s0);
+  const double in_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
+  const Eigen::Vector2d end = map.point_at(lane, end_s);
+  for (size_t r = 0; r < map.lanes().size(); ++r) {
+    const auto& ring = map.lanes()[r];
+    if (!closes_on_itself(ring) || ahead < 1 || std::abs(map.project(int(r), end).lateral) > kJunctionReachM) continue;
+    const double around = ring.length(), s_in = map.project(int(r), end).s;
+    const int ring_dir = ring.direction == scene::TrafficDirection::Backward ? -1 : 1;
+    std::optional<std::pair<double, int>> exit;  // arc along the ring to it, its lane
+    for (size_t e = 0; e < map.lanes().size(); ++e) {
+      const auto& out = map.lanes()[e];
+      if (e == r || int(e) == lane || out.type != "driving" || closes_on_itself(out)) continue;
+      const double start_s = out.direction == scene::TrafficDirection::Backward ? out.length() : 0.0;
+      const auto on_ring = map.project(int(r), map.point_at(int(e), start_s));
+      if (std::abs(on_ring.lateral) > kJunctionReachM) continue;
+      if (std::abs(wrap(map.travel_yaw_at(int(e), start_s) - in_yaw - sign * kPi / 2)) > kPi / 4) continue;
+      const double arc = std::fmod(ring_dir * (on_ring.s - s_in) + 2 * around, around);
+      if (arc > 6 && (!exit || arc < exit->first)) exit = {arc, int(e)};
+    }
+    if (!exit) continue;
+    TurnPlan plan;
+    plan.path = lane_path(map, lane, s0, dir, ahead);
+    const size_t before = plan.path.points.size() - 1;  // from the lane's end: the entry is unmapped
+    const auto ring_at = [&](double q) { return std::fmod(s_in + ring_dir * q + 2 * around, around); };
+    append_hermite(plan.path, map.point_at(int(r), ring_at(4)), map.travel_yaw_at(int(r), ring_at(4)), 0.5);
+    for (double q = 5; q <= exit->first - 3; q += 1.0) plan.path.push(map.point_at(int(r), ring_at(q)));
+    const auto& out = map.lanes()[size_t(exit->second)];
+    const int out_dir = out.direction == scene::TrafficDirection::Backward ? -1 : 1;
+    const double out_s = (out_dir > 0 ? 0.0 : out.length()) + out_dir * 3.0;
+    append_hermite(plan.path, map.point_at(exit->second, out_s), map.travel_yaw_at(exit->second, out_s), 0.5);
+    plan.connector.assign(plan.path.points.begin() + long(before), plan.path.points.end());
+    const Path rest = lane_path(map, exit->second, out_s, out_dir, std::max(0.0, length - plan.path.length()));
+    for (const auto& p : rest.points) plan.path.push(p);
+    plan.target_lane = out.id;
+    return plan;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length) {
+  if (auto round = roundabout_path(map, lane, s0, dir, sign, length)) return round;
   const double travel_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
   // Crossing streets, then side streets that meet this lane (T junctions), nearest first.
   auto meets = map.crossings(lane);
@@ -207,7 +260,10 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
     while (t + 1e-9 < times[i]) {
       const double s_now = reference(t), s_next = reference(t + dt);
       const double v = (s_next - s_now) / dt;
-      const double lookahead = std::max(3.0, 0.9 * v);
+      double lookahead = std::max(3.0, 0.9 * v);
+      // Pure pursuit cuts a bend of radius R by about L^2 / 2R: keep that within a metre.
+      if (const double k = path.curvature_at(s_now + 0.5 * lookahead); k > 1e-3)
+        lookahead = std::max(2.5, std::min(lookahead, std::sqrt(2.0 / k)));
       const Eigen::Vector2d target = path.at(s_now + lookahead);
       const double alpha = wrap(std::atan2(target.y() - y, target.x() - x) - yaw);
       const double want = std::clamp(std::atan2(2 * wheelbase * std::sin(alpha), lookahead), -max_steer, max_steer);

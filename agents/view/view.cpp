@@ -213,7 +213,7 @@ ViewChange parse_view(const std::string& instruction) {
                                       "facing backward", "facing backwards", "look the other way", "face the other way",
                                       "rear view", "rearward", "view around", "camera around", "about face"}))
     v.yaw_deg = 180;
-  if (text::has_any(w, {"ego", "drive", "drives", "driving", "i drive", "we drive", "crawl", "cruise", "roll"}) &&
+  if (text::has_any(w, {"ego", "drive", "drives", "driving", "i drive", "we drive", "crawl", "cruise", "roll", "go"}) &&
       !text::has_any(w, {"camera", "view", "viewpoint"})) {
     if (text::has_any(w, {"slowly", "slow", "crawl"})) v.ego_motion = "slow";
     else if (text::has_any(w, {"fast", "quickly", "speed", "rapidly", "faster"})) v.ego_motion = "fast";

@@ -172,3 +172,31 @@ TEST(LaneUse, OrdersToDriveOrLookWithNoVehicleAreTheViews) {
   EXPECT_EQ(agents::manager::decompose("Look left, towards the side street.")[0].kind, "view");
   EXPECT_DOUBLE_EQ(*agents::view::parse_view("look left toward the side street").yaw_deg, 90);
 }
+
+// Blind set v18's classes, on its roundabout layout.
+TEST(LaneUse, ARoundaboutIsAPlaceToBeOnAndAJunctionToTurnAt) {
+  const fs::path ra = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-roundabout";
+  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
+  agents::manager::Manager manager(agents::local_caller(backend), backend);
+  const auto chat = [&](const std::string& id, const std::string& command) {
+    return manager.chat(id, ra.string(), command).edit_state;
+  };
+  EXPECT_EQ(chat("a", "Remove the car going round the roundabout.")["removed"], nlohmann::json({"obj_1"}));
+  EXPECT_EQ(agents::language::find_lane_name(agents::text::words("turn left at the roundabout")), std::nullopt);
+  // A turn at the roundabout goes round the ring, on its lanes, to the exit on that side: the first
+  // exit for a right turn (out within the clip, heading south), three quarters round for a left
+  // one (heading north-west and beyond by the clip's end).
+  for (const auto& [command, min_yaw, max_yaw] : {std::tuple{"Add a blue car turning right at the roundabout.", -1.9, -1.2},
+                                                  std::tuple{"Add a red car turning left at the roundabout.", 0.8, 1.9}}) {
+    const auto s = chat(command, command);
+    ASSERT_EQ(s["added"].size(), 1u) << command << s["unresolved"].dump();
+    const double yaw = s["added"][0]["trajectory"].back()["yaw"].get<double>();
+    EXPECT_GT(yaw, min_yaw) << command;
+    EXPECT_LT(yaw, max_yaw) << command;
+    EXPECT_TRUE(s["notes"].dump().find("off the mapped lanes") == std::string::npos) << command << s["notes"].dump();
+  }
+  // "A horse box trailer" is a trailer; "go a bit faster" moves the ego.
+  EXPECT_EQ(agents::lexicon::unsupported_noun(agents::text::words("add a horse box trailer")), std::nullopt);
+  EXPECT_EQ(agents::lexicon::unsupported_noun(agents::text::words("add a horse")), "horse");
+  EXPECT_EQ(chat("b", "Go a bit faster.")["view"]["ego_motion"], "fast");
+}
