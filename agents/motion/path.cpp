@@ -255,15 +255,21 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
     const double w = (tt - times[k]) / std::max(1e-9, times[k + 1] - times[k]);
     return arc[k] + w * (arc[k + 1] - arc[k]);
   };
+  double bend_at = -1e9, max_lookahead = 1e9;
   out.push_back({x, y, wrap(yaw)});
   for (size_t i = 1; i < times.size(); ++i) {
     while (t + 1e-9 < times[i]) {
       const double s_now = reference(t), s_next = reference(t + dt);
       const double v = (s_next - s_now) / dt;
-      double lookahead = std::max(3.0, 0.9 * v);
-      // Pure pursuit cuts a bend of radius R by about L^2 / 2R: keep that within a metre.
-      if (const double k = path.curvature_at(s_now + 0.5 * lookahead); k > 1e-3)
-        lookahead = std::max(2.5, std::min(lookahead, std::sqrt(2.0 / k)));
+      // Pure pursuit cuts a bend of radius R by about L^2 / 2R: keep that within a metre. The
+      // bend, half a look-ahead on, is looked up every 0.3 m (this runs for every step of every
+      // candidate path).
+      if (std::abs(s_now - bend_at) > 0.3) {
+        const double k = path.curvature_at(s_now + 0.45 * std::max(3.0, v));
+        max_lookahead = k > 1e-3 ? std::sqrt(2.0 / k) : 1e9;
+        bend_at = s_now;
+      }
+      const double lookahead = std::max(2.5, std::min(std::max(3.0, 0.9 * v), max_lookahead));
       const Eigen::Vector2d target = path.at(s_now + lookahead);
       const double alpha = wrap(std::atan2(target.y() - y, target.x() - x) - yaw);
       const double want = std::clamp(std::atan2(2 * wheelbase * std::sin(alpha), lookahead), -max_steer, max_steer);
