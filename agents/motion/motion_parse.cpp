@@ -131,6 +131,11 @@ std::optional<std::string> find_placement(const Words& w, bool has_ahead_distanc
 
 
 std::optional<std::string> find_action(const Words& w) {
+  // "takes the second exit (off the roundabout)": which exit round the ring, not a turn said.
+  static const char* kOrdinals[] = {"first", "second", "third", "fourth", "1st", "2nd", "3rd", "4th"};
+  for (size_t i = 0; i + 1 < w.size(); ++i)
+    for (int k = 0; k < 8; ++k)
+      if (w[i] == kOrdinals[k] && w[i + 1] == "exit") return "exit_" + std::to_string(k % 4 + 1);
   // "waiting at the junction to turn right", "about to pull out": what it will do after the
   // clip; now it stands (unless it is said to go on, "waits, then turns").
   const bool about_to_start = has_any(w, {"about to", "ready to", "preparing to"}) &&

@@ -90,9 +90,10 @@ bool closes_on_itself(const scene::Lane& l) {
 }
 
 // A turn at a roundabout: the ring the lane runs into, followed its way round to the first exit
-// leaving the way the turn goes (left +90 deg, right -90 deg from the way in), then that exit.
+// leaving the way the turn goes (left +90 deg, right -90 deg from the way in), or to the nth exit
+// (nth > 0, any way), then that exit.
 std::optional<TurnPlan> roundabout_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign,
-                                        double length) {
+                                        double length, int nth = 0) {
   const auto& in = map.lanes()[size_t(lane)];
   const double end_s = dir > 0 ? in.length() : 0.0, ahead = dir * (end_s - s0);
   const double in_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
@@ -102,18 +103,21 @@ std::optional<TurnPlan> roundabout_path(const scene::LaneMap& map, int lane, dou
     if (!closes_on_itself(ring) || ahead < 1 || std::abs(map.project(int(r), end).lateral) > kJunctionReachM) continue;
     const double around = ring.length(), s_in = map.project(int(r), end).s;
     const int ring_dir = ring.direction == scene::TrafficDirection::Backward ? -1 : 1;
-    std::optional<std::pair<double, int>> exit;  // arc along the ring to it, its lane
+    std::vector<std::pair<double, int>> exits;  // arc along the ring to each, its lane
     for (size_t e = 0; e < map.lanes().size(); ++e) {
       const auto& out = map.lanes()[e];
       if (e == r || int(e) == lane || out.type != "driving" || closes_on_itself(out)) continue;
       const double start_s = out.direction == scene::TrafficDirection::Backward ? out.length() : 0.0;
       const auto on_ring = map.project(int(r), map.point_at(int(e), start_s));
       if (std::abs(on_ring.lateral) > kJunctionReachM) continue;
-      if (std::abs(wrap(map.travel_yaw_at(int(e), start_s) - in_yaw - sign * kPi / 2)) > kPi / 4) continue;
+      if (nth == 0 && std::abs(wrap(map.travel_yaw_at(int(e), start_s) - in_yaw - sign * kPi / 2)) > kPi / 4) continue;
       const double arc = std::fmod(ring_dir * (on_ring.s - s_in) + 2 * around, around);
-      if (arc > 6 && (!exit || arc < exit->first)) exit = {arc, int(e)};
+      if (arc > 6) exits.emplace_back(arc, int(e));
     }
-    if (!exit) continue;
+    std::sort(exits.begin(), exits.end());
+    const size_t pick = nth > 0 ? size_t(nth - 1) : 0;
+    if (exits.size() <= pick) continue;
+    const auto* exit = &exits[pick];
     TurnPlan plan;
     plan.path = lane_path(map, lane, s0, dir, ahead);
     const size_t before = plan.path.points.size() - 1;  // from the lane's end: the entry is unmapped
@@ -134,6 +138,11 @@ std::optional<TurnPlan> roundabout_path(const scene::LaneMap& map, int lane, dou
 }
 
 }  // namespace
+
+std::optional<TurnPlan> roundabout_exit_path(const scene::LaneMap& map, int lane, double s0, int dir, int nth,
+                                             double length) {
+  return roundabout_path(map, lane, s0, dir, 0, length, nth);
+}
 
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length) {
   if (auto round = roundabout_path(map, lane, s0, dir, sign, length)) return round;

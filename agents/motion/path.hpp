@@ -43,6 +43,9 @@ struct TurnPlan {
 // Along the lane from s0 in direction dir, the next crossing with a lane whose legal travel
 // turns left (sign +1) or right (sign -1) by roughly 90 degrees; the path turns onto it.
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length);
+// The nth exit (1-based, in the ring's direction) of the roundabout the lane runs into, if any.
+std::optional<TurnPlan> roundabout_exit_path(const scene::LaneMap& map, int lane, double s0, int dir, int nth,
+                                             double length);
 
 struct LaneChangePlan {
   Path path;

@@ -43,6 +43,18 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
     const bool left = turn_path(map, c.lane, c.s, c.dir, 1, total).has_value();
     m.action = left ? "turn_left" : "turn_right";
   }
+  if (m.action.rfind("exit_", 0) == 0 && speed > 0) {  // the nth exit round a roundabout
+    const int nth = m.action.back() - '0';
+    auto round = roundabout_exit_path(map, c.lane, c.s, c.dir, nth, total);
+    if (!round) return "no roundabout with a " + m.action.substr(5) + "th exit where its lane ends";
+    // Said as the turn it makes: the way out against the way in.
+    const double in_yaw = map.tangent_yaw_at(c.lane, c.s) + (c.dir > 0 ? 0 : kPi);
+    const double turn = std::remainder(map.travel_yaw_at(map.find(round->target_lane), 0.0) - in_yaw, 2 * kPi);
+    m.action = turn > kPi / 4 ? "turn_left" : turn < -kPi / 4 ? "turn_right" : "straight";
+    m.path = std::move(round->path);
+    m.connector = std::move(round->connector);
+    return std::nullopt;
+  }
   if (m.action == "static" || speed <= 0) {
     m.action = "static";
     speed = 0;

@@ -195,6 +195,11 @@ TEST(LaneUse, ARoundaboutIsAPlaceToBeOnAndAJunctionToTurnAt) {
     EXPECT_LT(yaw, max_yaw) << command;
     EXPECT_TRUE(s["notes"].dump().find("off the mapped lanes") == std::string::npos) << command << s["notes"].dump();
   }
+  // Exits by number, in the ring's direction: the first one from the west arm is the right turn.
+  EXPECT_EQ(agents::motion::parse_motion("take the second exit at the roundabout").action, "exit_2");
+  const auto first = chat("c", "Add a red Mini that takes the first exit off the roundabout.");
+  ASSERT_EQ(first["added"].size(), 1u) << first["unresolved"].dump();
+  EXPECT_EQ(first["added"][0]["intent"]["action"], "turn_right");
   // "A horse box trailer" is a trailer; "go a bit faster" moves the ego.
   EXPECT_EQ(agents::lexicon::unsupported_noun(agents::text::words("add a horse box trailer")), std::nullopt);
   EXPECT_EQ(agents::lexicon::unsupported_noun(agents::text::words("add a horse")), "horse");
