@@ -143,7 +143,7 @@ const CatalogEntry& Catalog::generic(const std::string& type) const {
   for (const auto& e : entries_)
     if (e.brand.empty() && e.type == type) return e;
   // A kind with no mesh of its own (a tractor, a trailer): the nearest in build, a truck.
-  if (type != "truck" && (type == "construction" || type == "trailer")) return generic("truck");
+  if (type == "construction" || type == "trailer") return generic("truck");
   return entries_.front();
 }
 

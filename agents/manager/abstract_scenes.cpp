@@ -1,6 +1,7 @@
 // Abstract scenes (a jam, a busy road, a road block, roadworks): many vehicles placed by one
 // request, each strictly (no collision, on the lane asked for), fewer rather than wrong.
 #include <map>
+#include <optional>
 
 #include "agents/language/text.hpp"
 #include "agents/manager/manager.hpp"
@@ -44,16 +45,28 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
       if (said.contains(key)) intent[key] = said[key];
     return intent;
   };
-  if (in.kind == "traffic_jam") {
-    // Where recorded traffic in that lane would run into a queue close by (it cannot brake), the
-    // queue stands further up the road, beyond where that traffic gets to in the clip.
-    json at = with_said({{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}});
-    for (double further : {45.0, 75.0, 105.0, 135.0}) {
+  // Where recorded traffic in a lane would run into a queue or works close by (it cannot brake),
+  // they stand further up the road, beyond where that traffic gets to in the clip: the first
+  // vehicle is tried at each distance in turn, unless the user said one. The distance it fits at.
+  const auto first_fit = [&](const std::string& what, const auto& at, std::optional<double> d,
+                             std::initializer_list<double> further) {
+    add(what, at(d));
+    for (double next : further) {
       if (placed > 0 || said.contains("distance_m")) break;
-      add(std::string(colors[0]) + " " + kinds[0], at);
-      if (placed == 0) at["distance_m"] = further;
+      add(what, at(d = next));
     }
-    for (int k = placed; k < 8; ++k) add(std::string(colors[k]) + " " + kinds[k], at);
+    return d;
+  };
+  const std::optional<double> said_distance =
+      said.contains("distance_m") ? std::optional<double>(said["distance_m"].get<double>()) : std::nullopt;
+  if (in.kind == "traffic_jam") {
+    const auto queue_at = [&](std::optional<double> d) {
+      json intent = with_said({{"placement", "front"}, {"speed", "slow"}, {"action", "straight"}});
+      if (d) intent["distance_m"] = *d;
+      return intent;
+    };
+    const auto d = first_fit(std::string(colors[0]) + " " + kinds[0], queue_at, said_distance, {45.0, 75.0, 105.0, 135.0});
+    for (int k = placed; k < 8; ++k) add(std::string(colors[k]) + " " + kinds[k], queue_at(d));
   } else if (in.kind == "busy_road") {
     static const char* where[] = {"front", "left_front", "back", "front", "left_front", "back", "front", "left_front", "front", "back"};
     // "on my side of the road": all of it the ego's way (away ahead of it, toward it behind).
@@ -74,15 +87,11 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
       add("road barrier", with_said({{"placement", k == 1 ? "left_front" : "front"}, {"distance_m", at - 5.0 - 2.5 * (k / 2)},
                                      {"action", "static"}}));
   } else {
-    // As for a jam: where recorded traffic would run into works close by, they stand further up.
-    double first = said.value("distance_m", 14.0);
-    const auto cone_at = [&](double d) { return with_said({{"placement", "front"}, {"distance_m", d}, {"action", "static"}}); };
-    for (double further : {30.0, 50.0, 70.0}) {
-      add("traffic cone", cone_at(first));
-      if (placed > 0 || said.contains("distance_m")) break;
-      first = further;
-    }
-    for (int k = placed > 0 ? 1 : 0; k < 6; ++k) add(k < 4 ? "traffic cone" : "road barrier", cone_at(first + 3.0 * k));
+    const auto cone_at = [&](std::optional<double> d) {
+      return with_said({{"placement", "front"}, {"distance_m", d.value_or(14.0)}, {"action", "static"}});
+    };
+    const double first = first_fit("traffic cone", cone_at, said_distance, {30.0, 50.0, 70.0}).value_or(14.0);
+    for (int k = placed; k < 6; ++k) add(k < 4 ? "traffic cone" : "road barrier", cone_at(first + 3.0 * k));
   }
   if (placed == 0)
     c.unresolved.push_back({{"instruction", in.text},

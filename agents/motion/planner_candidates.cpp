@@ -193,6 +193,9 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
     region.a_max = std::max(region.a_max, 75.0);
     region.d_max = std::max(region.d_max, 120.0);
   }
+  // A lane said with no distance ("on the farm track"): wherever it is, rather than the usual
+  // distance on another lane; nearer still better.
+  const bool lane_without_distance = (m_.lane || m_.lane_edge || !use_lanes_.empty()) && !m_.distance_m;
   const auto& lanes = scene_.lanes.lanes();
   for (size_t li = 0; li < lanes.size(); ++li) {
     const auto& lane = lanes[li];
@@ -210,11 +213,8 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         const auto ds = direction_score(int(li), s, dir, parked);
         if (!ds) continue;
         Candidate c{int(li), s, dir, parked, *ds};
-        // A lane said with no distance ("on the farm track"): wherever it is, rather than the
-        // usual distance on another lane; nearer still better.
-        const bool lane_said = m_.lane || m_.lane_edge || !use_lanes_.empty();
         const double off = std::abs(pe.norm() - region.d_pref);
-        c.score += lane_said && !m_.distance_m ? std::min(off, 30.0) + 0.1 * off : off;
+        c.score += lane_without_distance ? std::min(off, 30.0) + 0.1 * off : off;
         c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
         if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(pe.y());
         if (placement == "left" || placement == "right") c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x());

@@ -36,6 +36,25 @@ scene::LaneMap pocket_map(const std::string& pocket_id) {
   return scene::LaneMap({straight("east_kerb", -60, 0, 220, 0), straight("east_inner", -60, 3.5, 220, 3.5), pocket});
 }
 
+// One conversation manager on one of the blind layouts, with the offline backend: chat(id, command)
+// gives the edit state after that round.
+class LayoutChat {
+ public:
+  explicit LayoutChat(const std::string& layout)
+      : dir_((fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts" / layout).string()),
+        backend_(agents::llm::make_backend("offline")),
+        manager_(agents::local_caller(backend_), backend_) {}
+  nlohmann::json operator()(const std::string& id, const std::string& command) {
+    return manager_.chat(id, dir_, command).edit_state;
+  }
+  const std::string& dir() const { return dir_; }
+
+ private:
+  std::string dir_;
+  std::shared_ptr<agents::llm::Backend> backend_;
+  agents::manager::Manager manager_;
+};
+
 }  // namespace
 
 TEST(LaneUse, APocketOpeningOffALaneIsATurnLaneOnItsSide) {
@@ -98,18 +117,16 @@ TEST(LaneUse, ConstructionVehiclesAndTrailersAreNamedAndAddedAsTrucks) {
 }
 
 TEST(LaneUse, ARoundThatGoesOnFromTheLastTakesItsVerb) {
-  const fs::path scene_dir = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-turnpocket";
-  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
-  agents::manager::Manager manager(agents::local_caller(backend), backend);
-  manager.chat("c", scene_dir.string(), "delete the motorbike");
-  const auto s = manager.chat("c", scene_dir.string(), "and the bike in the bus lane too").edit_state;
+  LayoutChat chat("blind-turnpocket");
+  chat("c", "delete the motorbike");
+  const auto s = chat("c", "and the bike in the bus lane too");
   EXPECT_EQ(s["removed"], nlohmann::json({"obj_7", "obj_10"}));
   EXPECT_TRUE(s["added"].empty());
   // On its own, a vehicle with no verb is still an addition.
-  const auto fresh = manager.chat("d", scene_dir.string(), "a red car 20 m ahead").edit_state;
+  const auto fresh = chat("d", "a red car 20 m ahead");
   EXPECT_EQ(fresh["added"].size(), 1u);
   // The view moves into the lane the map names.
-  const auto v = manager.chat("e", scene_dir.string(), "move the camera into the bus lane").edit_state;
+  const auto v = chat("e", "move the camera into the bus lane");
   EXPECT_NEAR(v["view"]["translation_m"][1].get<double>(), -3.5, 0.3);
 }
 
@@ -122,24 +139,20 @@ TEST(LaneUse, DownTheSideStreetIsWhereItDrivesUnlessItTurns) {
 }
 
 TEST(LaneUse, ACountRevisionResizesTheGroupAddedLast) {
-  const fs::path scene_dir = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-sbend";
-  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
-  agents::manager::Manager manager(agents::local_caller(backend), backend);
-  EXPECT_EQ(manager.chat("c", scene_dir.string(), "Add two cones in the lay-by.").edit_state["added"].size(), 2u);
-  const auto more = manager.chat("c", scene_dir.string(), "Actually make it four.").edit_state;
+  LayoutChat chat("blind-sbend");
+  EXPECT_EQ(chat("c", "Add two cones in the lay-by.")["added"].size(), 2u);
+  const auto more = chat("c", "Actually make it four.");
   ASSERT_EQ(more["added"].size(), 4u);
   for (const auto& a : more["added"]) EXPECT_EQ(a["intent"]["lane"], "lay_by");
-  EXPECT_EQ(manager.chat("c", scene_dir.string(), "make it just one").edit_state["added"].size(), 1u);
+  EXPECT_EQ(chat("c", "make it just one")["added"].size(), 1u);
   // A number with a unit is no count.
-  const auto moved = manager.chat("c", scene_dir.string(), "make it 5 m further away").edit_state;
+  const auto moved = chat("c", "make it 5 m further away");
   EXPECT_EQ(moved["added"].size(), 1u);
 }
 
 TEST(LaneUse, AJamWhereRecordedTrafficComesStandsBeyondItsReachOnTheThroughLane) {
-  const fs::path scene_dir = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-turnpocket";
-  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
-  agents::manager::Manager manager(agents::local_caller(backend), backend);
-  const auto s = manager.chat("c", scene_dir.string(), "Create a traffic jam in the left lane.").edit_state;
+  LayoutChat chat("blind-turnpocket");
+  const auto s = chat("c", "Create a traffic jam in the left lane.");
   ASSERT_GE(s["added"].size(), 3u);
   for (const auto& a : s["added"]) EXPECT_EQ(a["intent"]["lane"], "east_left");  // not the turn pocket
 }
@@ -147,12 +160,7 @@ TEST(LaneUse, AJamWhereRecordedTrafficComesStandsBeyondItsReachOnTheThroughLane)
 // Blind set v17's classes, on its left-hand-traffic layout: which lane is the fast one, a lane
 // the map names in its own words, exits, a stop with no parking lane, bare numbers and ego orders.
 TEST(LaneUse, TheFastLaneIsNextToTheOtherWaysTrafficOnEitherSideOfTheRoad) {
-  const fs::path lht = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-lhtexit";
-  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
-  agents::manager::Manager manager(agents::local_caller(backend), backend);
-  const auto chat = [&](const std::string& id, const std::string& command) {
-    return manager.chat(id, lht.string(), command).edit_state;
-  };
+  LayoutChat chat("blind-lhtexit");
   EXPECT_EQ(chat("a", "get rid of the lorry in the overtaking lane")["removed"], nlohmann::json({"obj_2"}));
   EXPECT_NEAR(chat("b", "Put the view in the overtaking lane.")["view"]["translation_m"][1].get<double>(), -3.5, 0.3);
   EXPECT_EQ(chat("c", "Delete the cyclist on the service road.")["removed"], nlohmann::json({"obj_8"}));
@@ -161,7 +169,7 @@ TEST(LaneUse, TheFastLaneIsNextToTheOtherWaysTrafficOnEitherSideOfTheRoad) {
   const auto v = chat("f", "Pull the camera back ten metres and up one.")["view"]["translation_m"];
   EXPECT_EQ(v, nlohmann::json({-10.0, 0.0, 1.0}));
   // A word the map does not use names nothing, and narrows nothing.
-  EXPECT_TRUE(agents::language::lanes_for_use(scene::load_scene(lht).lanes, "ring").empty());
+  EXPECT_TRUE(agents::language::lanes_for_use(scene::load_scene(chat.dir()).lanes, "ring").empty());
   EXPECT_FALSE(agents::language::find_lane_name(agents::text::words("the right-hand lane")));
   EXPECT_EQ(agents::language::find_lane_name(agents::text::words("on the service road"))->use, "service");
 }
@@ -175,12 +183,7 @@ TEST(LaneUse, OrdersToDriveOrLookWithNoVehicleAreTheViews) {
 
 // Blind set v18's classes, on its roundabout layout.
 TEST(LaneUse, ARoundaboutIsAPlaceToBeOnAndAJunctionToTurnAt) {
-  const fs::path ra = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-roundabout";
-  std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
-  agents::manager::Manager manager(agents::local_caller(backend), backend);
-  const auto chat = [&](const std::string& id, const std::string& command) {
-    return manager.chat(id, ra.string(), command).edit_state;
-  };
+  LayoutChat chat("blind-roundabout");
   EXPECT_EQ(chat("a", "Remove the car going round the roundabout.")["removed"], nlohmann::json({"obj_1"}));
   EXPECT_EQ(agents::language::find_lane_name(agents::text::words("turn left at the roundabout")), std::nullopt);
   // A turn at the roundabout goes round the ring, on its lanes, to the exit on that side: the first
