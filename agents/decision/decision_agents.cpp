@@ -54,6 +54,9 @@ class ViewAgent : public DecisionAgent {
       const auto current = view::view_state_from_json(call.args.value("view", json::object()));
       if (change.toward_kerb_m || change.to_lane)
         change = view::resolve_road_sides(change, *cached_scene(call.scene), current.translation_m[1]);
+      if (change.to_lane)
+        return AgentOutcome::failure(ErrorKind::BadRequest, "the map has no " + *change.to_lane +
+                                                                " lane beside the ego to move the view to");
       const auto state = view::apply(current, change);
       return AgentOutcome::success({{"change", view::to_json(change)}, {"view", view::to_json(state)}});
     }

@@ -37,7 +37,12 @@ std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
     }
     out.back().push_back(w[i]);
   }
-  if (out.back().empty()) out.pop_back();
+  // "the broken-down car as well": a phrase of fillers only names nothing.
+  std::erase_if(out, [](const Words& p) {
+    return std::all_of(p.begin(), p.end(), [](const std::string& x) {
+      return text::has_any({x}, {"well", "too", "also", "please", "now", "then", "again", "anyway", "instead"});
+    });
+  });
   return out;
 }
 
@@ -75,6 +80,23 @@ std::optional<std::string> unknown_head(const Words& said) {
   return std::nullopt;
 }
 
+// "past the junction", "before the crossing": where along the road, not the cross street's lane;
+// the words are blanked.
+std::optional<std::string> blank_junction_place(Words& p) {
+  std::optional<std::string> side;
+  for (const char* where : {"past", "after", "beyond", "before", "short of", "this side of"})
+    for (const char* place : {"the junction", "the crossing", "the intersection", "the crossroads", "the side street",
+                              "the side road", "the cross street", "the lights", "the traffic lights"}) {
+      const std::string phrase = std::string(where) + " " + place;
+      for (size_t at = text::find_phrase(p, phrase); at != std::string::npos; at = text::find_phrase(p, phrase)) {
+        for (size_t k = 0; k < text::words(phrase).size(); ++k) p[at + k] = "_";
+        const std::string wh = where;
+        side = wh == "past" || wh == "after" || wh == "beyond" ? "after" : "before";
+      }
+    }
+  return side;
+}
+
 // The lane a phrase names, if any.
 std::optional<std::string> lane_words(const Words& p) {
   if (text::has_any(p, {"my lane", "our lane", "same lane", "ego lane", "this lane"})) return "ego";
@@ -97,6 +119,7 @@ std::optional<std::string> lane_words(const Words& p) {
   if (text::has_any(p, {"parking lane", "parking bay", "bus bay", "bus stop", "parking spot", "parking space"}))
     return "parking";
   if (text::has_any(p, {"slip road", "on ramp", "ramp", "merging lane", "acceleration lane", "entry lane", "joining",
+                        "lane that ends", "lane which ends", "ending lane", "lane ending", "lane that merges",
                         "the exit", "an exit", "exit lane", "off ramp", "exiting", "leaving the road"}))
     return "ramp";
   if (text::has_any(p, {"hard shoulder", "shoulder", "verge", "emergency lane", "roadside"})) return "shoulder";
@@ -204,6 +227,7 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   if (text::has_any(p, {"all", "every", "each", "any"})) s.quantity = "all";
   const auto colors = lexicon::find_colors(p);
   if (!colors.empty()) s.color = lexicon::color_class(colors.front().rgb);
+  s.junction = blank_junction_place(p);
   s.lane = lane_words(p);
   // "across the street", "on my side": a half of the road, parked cars included.
   if (text::has_any(p, {"across the street", "across the road", "far side", "other side of the road", "other side of the street",
@@ -234,7 +258,9 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting",
                         "broken down", "stalled", "abandoned", "crashed", "disabled"}))
     s.moving = false;
-  else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling"})) s.moving = true;
+  else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling", "pulling out", "pulling away",
+                             "leaving", "exiting", "driving out", "coming out", "backing out", "reversing out"}))
+    s.moving = true;
   s.parked = text::has_any(p, {"parked", "parking"});
   read_order_and_count(p, types, s);
   return s;
@@ -253,6 +279,7 @@ std::string describe(const Selector& s) {
   if (s.lane) out += " (lane: " + *s.lane + ")";
   if (s.lane_use) out += " (in the " + *s.lane_use + " lane)";
   if (s.road_side) out += *s.road_side == "far" ? " across the road" : " on the ego's side of the road";
+  if (s.junction) out += " " + *s.junction + " the junction";
   return out;
 }
 

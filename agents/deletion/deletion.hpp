@@ -19,6 +19,7 @@ struct Selector {
   std::optional<std::string> lane;      // ego, left, middle, right, oncoming, cross, parking (lane_relation.hpp)
   std::optional<std::string> lane_use;  // bus, turn, turn_left, turn_right, cycle, tram, taxi, hov (lane_names.hpp)
   std::optional<std::string> road_side;  // near (my side of the road), far (across the road)
+  std::optional<std::string> junction;   // before, after: "the cars parked past the junction" (first one ahead)
   std::optional<std::string> of_previous;  // behind, front, beside, near, same_way: "... and the truck behind it"
   bool anchor_only = false;             // "closest to the police car": it places the next selector, stays
   std::optional<bool> moving;

@@ -107,6 +107,14 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
       if (c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency"))
         cars.push_back(c);
     if (!cars.empty()) m = cars;
+    // "the broken-down car" beside a police car: one "car" is a plain one where there is one
+    // ("the last parked car" counts along the row, police cars in it).
+    if (t.quantity == "one" && !t.order && t.noun.find("police") == std::string::npos) {
+      std::vector<const Candidate*> plain;
+      for (const auto* c : m)
+        if (c->object->has_category_prefix("vehicle.car")) plain.push_back(c);
+      if (!plain.empty()) m = plain;
+    }
   }
   // "the white SUV": of the cars that match, the tall ones.
   if (t.noun == "suv" || t.noun == "suvs" || t.noun == "jeep" || t.noun == "crossover") {
@@ -129,7 +137,30 @@ void keep_on_lanes_of_use(const Selector& t, const scene::Scene& scene, std::vec
   if (!t.lane_use) return;
   const auto lanes = language::lanes_for_use(scene.lanes, *t.lane_use);
   if (lanes.empty()) return;
-  std::erase_if(m, [&](const Candidate* c) { return std::find(lanes.begin(), lanes.end(), c->lane.own) == lanes.end(); });
+  // A car park is an area: a car on its way out, just off the aisle, is still in it.
+  const bool area = *t.lane_use == "car_park";
+  std::erase_if(m, [&](const Candidate* c) {
+    if (std::find(lanes.begin(), lanes.end(), c->lane.own) != lanes.end()) return false;
+    if (!area) return true;
+    const Eigen::Vector2d p = c->object->track.front().center.head<2>();
+    return std::none_of(lanes.begin(), lanes.end(), [&](int l) {
+      const auto pos = scene.lanes.project(l, p);
+      return pos.s > 0 && pos.s < scene.lanes.lanes()[size_t(l)].length() &&
+             std::abs(pos.lateral) < scene.lanes.lanes()[size_t(l)].width / 2 + 3.0;
+    });
+  });
+}
+
+// "the cars parked past the junction": beyond (or short of) the first junction ahead of the ego.
+// A map with none says nothing either way.
+void keep_by_junction(const Selector& t, const scene::Scene& scene, std::vector<const Candidate*>& m) {
+  if (!t.junction || scene.frames.empty()) return;
+  const auto& pose = scene.frames.front().ego_to_world;
+  const Eigen::Vector3d fwd = pose.linear().col(0);
+  const auto span = scene.lanes.junction_ahead(pose.translation().head<2>(), std::atan2(fwd.y(), fwd.x()));
+  if (!span) return;
+  const bool after = *t.junction == "after";
+  std::erase_if(m, [&](const Candidate* c) { return after ? c->pe.x() < span->to + 2 : c->pe.x() > span->from - 2; });
 }
 
 }  // namespace
@@ -172,6 +203,7 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
         if (matches(anywhere, c)) m.push_back(&c);
     }
     keep_on_lanes_of_use(t, scene, m);
+    keep_by_junction(t, scene, m);
     if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
     widen_or_narrow(t, scene, cands, m);
     if (m.empty()) {

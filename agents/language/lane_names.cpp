@@ -4,6 +4,8 @@
 #include <cctype>
 #include <iterator>
 
+#include "agents/language/text.hpp"
+
 namespace chatsim::agents::language {
 namespace {
 
@@ -25,6 +27,7 @@ std::vector<std::string> id_words(const std::string& role) {
   if (role == "cycle") return {"cycle", "bike", "bicycle"};
   if (role == "hov") return {"hov", "carpool"};
   if (role == "roundabout") return {"roundabout", "ring", "circle", "rotary", "circulatory"};
+  if (role == "car_park") return {"carpark", "park", "lot", "garage"};
   return {role};
 }
 
@@ -59,6 +62,10 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
         (w[i - 2] == "on" || w[i - 2] == "round" || w[i - 2] == "around" || w[i - 2] == "in" || w[i - 2] == "onto" ||
          w[i - 2] == "circling"))
       return LaneName{"roundabout", i - 1, i + 1};
+  // "in the car park", "the parking lot": an area of the map whose lanes' ids say so.
+  for (const char* place : {"car park", "carpark", "parking lot", "parking garage", "car lot", "parking structure"})
+    if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
+      return LaneName{"car_park", at, at + text::words(place).size()};
   for (size_t i = 1; i < w.size(); ++i) {
     // "the service road", "the farm track": a name the map's lane ids may use.
     if ((w[i] == "road" || w[i] == "track" || w[i] == "lane") && !says_where(w[i - 1]) &&

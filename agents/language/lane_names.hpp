@@ -11,7 +11,7 @@
 namespace chatsim::agents::language {
 
 // A lane's use as the agents pass it on: bus, turn, turn_left, turn_right, cycle, tram, taxi, hov,
-// roundabout ("on the roundabout": its ring),
+// roundabout ("on the roundabout": its ring), car_park ("in the car park": the lanes of that area),
 // or a word of the map's own ("service" for "the service road", "farm" for "the farm track").
 struct LaneName {
   std::string use;

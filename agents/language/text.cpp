@@ -246,4 +246,22 @@ void turns_to_degrees(std::vector<std::string>& w) {
     }
 }
 
+void bare_turns_to_degrees(std::vector<std::string>& w) {
+  bool turning = false;
+  for (size_t i = 0; i < w.size(); ++i) {
+    size_t used = 0;
+    if (turning && number_at(w, i, &used)) {  // first: "one and a half" is one number
+      const size_t after = i + used;
+      if (after == w.size() || has_any({w[after]}, {"and", "then", "to", "left", "right", "up", "down", "clockwise",
+                                                    "counterclockwise", "anticlockwise"}))
+        w.insert(w.begin() + long(after), "degrees");
+      i = after;
+      continue;
+    }
+    if (has_any({w[i]}, {"and", "then", "but", "while"})) turning = false;
+    if (has_any({w[i]}, {"rotate", "rotated", "rotating", "pan", "panned", "yaw", "swivel", "spin", "tilt", "tilted"}))
+      turning = true;
+  }
+}
+
 }  // namespace chatsim::agents::text

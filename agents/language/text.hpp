@@ -40,4 +40,8 @@ bool is_number_word(const std::string& w);
 // degrees ("90 degrees") so that every agent reads them as angles.
 void turns_to_degrees(std::vector<std::string>& w);
 
+// A bare number after a verb that turns ("rotate left by 45", "pan 20 to the right") is an
+// angle: "degrees" is put after it.
+void bare_turns_to_degrees(std::vector<std::string>& w);
+
 }  // namespace chatsim::agents::text

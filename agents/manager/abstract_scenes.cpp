@@ -41,7 +41,7 @@ void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) 
   if (said.value("placement", "") == "left" || said.value("placement", "") == "right")
     said["placement"] = said["placement"].get<std::string>() + "_front";
   const auto with_said = [&](json intent) {
-    for (const char* key : {"lane", "direction", "wrong_way", "placement"})
+    for (const char* key : {"lane", "lane_edge", "lane_use", "direction", "wrong_way", "placement", "junction"})
       if (said.contains(key)) intent[key] = said[key];
     return intent;
   };

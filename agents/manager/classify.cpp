@@ -182,6 +182,14 @@ Words fill_addition(const Words& c) {
   if (c.size() < 4 || (c[0] != "make" && c[0] != "fill" && c[0] != "line" && c[0] != "pack" && c[0] != "have"))
     return c;
   const size_t link = text::find_any(c, {"full of", "filled with", "packed with", "lined with", "with"});
+  // "fill the car park", "fill up the parking lane": a place for parking, filled with parked cars.
+  if (link == std::string::npos && (c[0] == "fill" || c[0] == "pack") &&
+      text::has_any(c, {"car park", "carpark", "parking lot", "parking lane", "parking lanes", "parking spaces",
+                        "parking spots", "parking bays", "parking garage", "the bays", "the spaces"})) {
+    Words out{"add", "a", "row", "of", "parked", "cars", "in"};
+    out.insert(out.end(), c.begin() + (c[1] == "up" ? 2 : 1), c.end());
+    return out;
+  }
   if (link == std::string::npos || link < 2) return c;
   const size_t noun_from = link + (c[link] == "with" ? 1 : 2);
   const auto types = lexicon::find_types(Words(c.begin() + long(noun_from), c.end()));
@@ -343,7 +351,8 @@ Instruction classify(const Words& c_in) {
                           has_any(c, {"look behind", "look back", "look backward", "look backwards", "turn around",
                                       "face backward", "face backwards", "look the other way", "face the other way",
                                       "look left", "look right", "look to the left", "look to the right", "face left",
-                                      "face right"});
+                                      "face right", "look from", "looking from", "seen from", "see from", "see it from",
+                                      "watch from"});
   // "drive a lot faster", "crawl along slowly": an order to drive, with no vehicle to drive, is the ego's.
   const bool ego_drives = !vehicle && !added_ref && c.size() > 1 &&
                           has_any({c.front()}, {"drive", "go", "speed", "crawl", "cruise", "roll"}) &&

@@ -253,6 +253,7 @@ void words_with_commas(const std::string& sentence, Words& w, std::vector<bool>&
     }
     auto ws = text::words(cur);
     text::turns_to_degrees(ws);
+    text::bare_turns_to_degrees(ws);
     for (size_t k = 0; k < ws.size(); ++k) {
       w.push_back(ws[k]);
       comma.push_back(k == 0 && pending_comma);

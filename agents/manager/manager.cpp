@@ -157,7 +157,11 @@ void Manager::run_instruction(Conversation& c, const Instruction& in, Round& rou
 
 void Manager::do_view(Conversation& c, const Instruction& in, Round& round) {
   const auto out = call("view", c, "adjust", {{"instruction", in.text}, {"view", c.view}});
-  if (!out.ok) throw std::runtime_error("view agent: " + out.message);
+  if (!out.ok && out.error != ErrorKind::BadRequest) throw std::runtime_error("view agent: " + out.message);
+  if (!out.ok) {  // a lane the map does not have: this instruction is not done, the conversation goes on
+    c.unresolved.push_back({{"instruction", in.text}, {"reason", out.message}});
+    return;
+  }
   if (out.result["change"].empty()) {
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "no distance, angle or ego motion found to apply to the view"}});
     return;

@@ -51,6 +51,7 @@ void MotionIntent::merge(const MotionIntent& o) {
   if (o.overtake) overtake = o.overtake;
   if (o.lane_edge) lane_edge = o.lane_edge;
   if (o.lane_use) lane_use = o.lane_use;
+  if (o.junction) junction = o.junction;
 }
 
 nlohmann::json to_json(const MotionIntent& m) {
@@ -61,6 +62,7 @@ nlohmann::json to_json(const MotionIntent& m) {
   util::put_optional(j, "lane", m.lane);
   util::put_optional(j, "lane_edge", m.lane_edge);
   util::put_optional(j, "lane_use", m.lane_use);
+  util::put_optional(j, "junction", m.junction);
   if (m.relative) j["relative"] = {{"to", m.relative->to}, {"region", m.relative->region}};
   util::put_optional(j, "action", m.action);
   util::put_optional(j, "speed", m.speed);
@@ -83,6 +85,7 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   util::get_optional(j, "lane", m.lane);
   util::get_optional(j, "lane_edge", m.lane_edge);
   util::get_optional(j, "lane_use", m.lane_use);
+  util::get_optional(j, "junction", m.junction);
   if (j.contains("relative"))
     m.relative = RelativePlacement{j["relative"].value("to", ""), j["relative"].value("region", "back")};
   util::get_optional(j, "action", m.action);

@@ -21,7 +21,10 @@ struct MotionIntent {
   std::optional<double> distance_change_m;  // "10 m further away": added to the distance it has (revisions)
   std::optional<std::string> distance_word;  // close, far
   std::optional<std::string> lane;        // ego, left, right, oncoming, parking
-  std::optional<std::string> lane_use;    // bus, turn, turn_left, turn_right, cycle, tram, taxi, hov
+  std::optional<std::string> lane_use;    // bus, turn, turn_left, turn_right, cycle, tram, taxi, hov, car_park
+  // "past the junction", "before the crossing": short of or beyond the first junction ahead; a
+  // distance said with it counts from the junction ("20 m past the junction").
+  std::optional<std::string> junction;    // before, after
   std::optional<std::string> lane_edge;   // inner (next to the centre line or median), outer (next to the kerb)
   std::optional<RelativePlacement> relative;  // region front, back, left, right, or at (its place)
   std::optional<std::string> action;      // straight, turn_left, turn_right, lane_change_left,

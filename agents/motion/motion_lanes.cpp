@@ -33,17 +33,21 @@ std::optional<std::string> blank_turn_targets(Words& w, bool turning) {
   return side_said;
 }
 
-// "before the side street", "just past the junction": where along the road (ahead, by the
-// junction), not a lane. The words are blanked; true when some were.
-bool blank_junction_location(Words& w) {
-  bool found = false;
+std::optional<std::string> blank_junction_location(Words& w) {
+  std::optional<std::string> side;
   for (const char* where : {"before", "after", "past", "beyond", "short of", "ahead of", "in front of", "near"})
-    for (const char* street : {"the side street", "the side road", "the junction", "the crossing", "the cross street"}) {
+    for (const char* street : {"the side street", "the side road", "the junction", "the crossing", "the cross street",
+                               "the intersection", "the crossroads", "the lights", "the traffic lights"}) {
       const std::string p = std::string(where) + " " + street;
-      for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p), found = true)
+      for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p)) {
         for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
+        const std::string wh = where;
+        side = wh == "after" || wh == "past" || wh == "beyond" ? "after"
+               : wh == "near"                                  ? "near"
+                                                               : "before";
+      }
     }
-  return found;
+  return side;
 }
 
 std::optional<std::string> find_lane(const Words& w_in) {
@@ -61,7 +65,9 @@ std::optional<std::string> find_lane(const Words& w_in) {
   if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane",
                   "farm track", "dirt track", "dirt road", "track", "alley", "alleyway", "driveway", "slip lane"}))
     return "cross";
-  if (has_any(w, {"on ramp", "slip road", "ramp", "merging lane", "acceleration lane", "entry lane"})) return "ramp";
+  if (has_any(w, {"on ramp", "slip road", "ramp", "merging lane", "acceleration lane", "entry lane", "lane that ends",
+                  "lane which ends", "ending lane", "lane ending", "lane that merges"}))
+    return "ramp";
   if (has_any(w, {"parking lane", "shoulder", "curb", "kerb", "roadside", "side of the road", "parking spot",
                   "the parking", "parking bay", "parking area", "parking spaces", "parking spots", "parking strip"}))
     return "parking";
@@ -82,6 +88,15 @@ std::optional<std::string> lane_change_to(Words& w) {
   for (size_t i = 0; i < w.size(); ++i) {
     if (std::find(std::begin(verbs), std::end(verbs), w[i]) == std::end(verbs)) continue;
     for (size_t j = i + 1; j + 1 < w.size() && j <= i + 5; ++j) {
+      // "merging from the left lane (into mine)": it moves away from the lane it comes from.
+      if (w[j] == "from" && j + 3 < w.size() && w[j + 1] == "the" && (w[j + 2] == "left" || w[j + 2] == "right") &&
+          w[j + 3] == "lane") {
+        const std::string side = w[j + 2] == "left" ? "right" : "left";
+        for (size_t k = j; k <= j + 3; ++k) w[k] = "_";
+        for (size_t k = j + 4; k + 1 < w.size() && k <= j + 6; ++k)
+          if ((w[k] == "my" || w[k] == "our") && w[k + 1] == "lane") w[k] = w[k + 1] = "_";
+        return "lane_change_" + side;
+      }
       if ((w[j] == "left" || w[j] == "right") && w[j + 1] == "lane") {
         const std::string side = w[j];
         w[j] = w[j + 1] = "_";

@@ -107,6 +107,7 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
     }
   // "in the bus lane": the map's lanes of that use; a map without one leaves the start free.
   if (m_.lane_use) use_lanes_ = language::lanes_for_use(scene.lanes, *m_.lane_use);
+  if (m_.junction) junction_ = scene.lanes.junction_ahead(ego_.p, ego_.yaw);
   const auto ego_lane = scene.lanes.containing(ego_.p);
   for (const auto& l : ego_lane)
     if (scene.lanes.lanes()[size_t(l.lane)].type == "driving") {

@@ -41,6 +41,7 @@ Region region_for(const std::string& placement, const MotionIntent& m, double wi
     const double extra = 20 * (widen - 1);
     r.a_min = r.a_min >= 0 ? std::max(0.0, r.a_min - extra) : std::max(-180.0, r.a_min - extra);
     r.a_max = r.a_max <= 0 ? std::min(0.0, r.a_max + extra) : std::min(180.0, r.a_max + extra);
+    r.d_max *= widen;  // and further: free bays, or a lane beyond where recorded traffic gets to
   }
   r.d_pref = m.distance_m.value_or(d_default);
   if (m.distance_m) {
@@ -88,7 +89,7 @@ double Planner::said_lane_penalty(int lane, double s) const {
   const auto& l = scene_.lanes.lanes()[size_t(lane)];
   const double lat = lateral_of(lane);
   if (*m_.lane == "ego") return lane == ego_lane_ ? 0 : 60;
-  if (*m_.lane == "parking") return l.type == "parking" ? 0 : 60;
+  if (*m_.lane == "parking") return l.for_stopping() ? 0 : 60;
   if (*m_.lane == "ramp") return scene_.lanes.merges(lane) ? 0 : 60;
   if (*m_.lane == "oncoming") return l.type == "driving" && !same_way_as_ego(lane, s) ? std::abs(lat) * 0.5 : 60;
   // "the right lane" where the ego drives in the rightmost lane: that lane (and so for the left).
@@ -168,9 +169,11 @@ std::vector<double> Planner::lane_edge_penalties() const {
     for (const auto& o : beside)
       if (o.same_way != b.same_way)
         gap[b.lane] = gap[b.lane] < 0 ? std::abs(b.lateral - o.lateral) : std::min(gap[b.lane], std::abs(b.lateral - o.lateral));
+  // "the slow lane" is of the ego's way unless the other way is said.
+  const bool other_way = m_.lane == "oncoming" || m_.direction == "toward";
   for (const auto& b : beside) {
-    out[b.lane] = 0;
-    if (gap[b.lane] < 0) continue;
+    out[b.lane] = b.same_way == other_way ? 60 : 0;
+    if (gap[b.lane] < 0 || out[b.lane] > 0) continue;
     double lo = gap[b.lane], hi = gap[b.lane];
     for (const auto& o : beside)
       if (o.same_way == b.same_way && gap[o.lane] >= 0) {
@@ -182,33 +185,60 @@ std::vector<double> Planner::lane_edge_penalties() const {
   return out;
 }
 
-std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const {
-  std::vector<Candidate> out;
-  const auto edge_penalty = lane_edge_penalties();
-  const std::string placement = m_.placement.value_or("front");
-  Region region = region_for(placement, m_, widen_);
+// "past the junction", "20 m before the crossing": distances counted from the first junction ahead,
+// clear of the lanes crossing there.
+void Planner::place_by_junction(const std::string& placement, double widen, Region& region) const {
+  const bool after = *m_.junction == "after";
+  const double edge = after ? junction_->to + 5 : junction_->from - 5;
+  const double d = m_.distance_m.value_or(8.0);
+  const double tol = m_.distance_m ? std::max(3.0, 0.2 * d) * widen : 1e9;
+  region.d_pref = after ? edge + d : std::max(1.0, edge - d);
+  region.d_min = after ? std::max(edge, region.d_pref - tol) : std::max(0.5, region.d_pref - tol);
+  region.d_max = after ? region.d_pref + std::min(tol, 60.0 * widen) : std::min(edge, region.d_pref + tol);
+  // Some way up the road, a side lane is only a few degrees off the axis.
+  if (placement == "left_front") region.a_min = std::min(region.a_min, 3.0);
+  if (placement == "right_front") region.a_max = std::max(region.a_max, -3.0);
+}
+
+Region Planner::search_region(const std::string& placement, double widen) const {
+  Region region = region_for(placement, m_, widen);
+  if (m_.junction && junction_) place_by_junction(placement, widen, region);
   // "on the farm track", "in the bus lane" with no side or distance: wherever that lane is ahead.
   if (!use_lanes_.empty() && placement == "front" && !m_.distance_m) {
     region.a_min = std::min(region.a_min, -75.0);
     region.a_max = std::max(region.a_max, 75.0);
     region.d_max = std::max(region.d_max, 120.0);
   }
+  return region;
+}
+
+std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const {
+  std::vector<Candidate> out;
+  const auto edge_penalty = lane_edge_penalties();
+  const std::string placement = m_.placement.value_or("front");
+  const Region region = search_region(placement, widen_);
+  // A second look round starts only where the first did not look: every start there was tried.
+  const std::optional<Region> looked = widen_ > 1 ? std::optional(search_region(placement, 1.0)) : std::nullopt;
   // A lane said with no distance ("on the farm track"): wherever it is, rather than the usual
   // distance on another lane; nearer still better.
   const bool lane_without_distance = (m_.lane || m_.lane_edge || !use_lanes_.empty()) && !m_.distance_m;
   const auto& lanes = scene_.lanes.lanes();
+  // "parked in the car park": in its bays, not in its aisle.
+  const bool use_has_stopping =
+      std::any_of(use_lanes_.begin(), use_lanes_.end(), [&](int l) { return lanes[size_t(l)].for_stopping(); });
   for (size_t li = 0; li < lanes.size(); ++li) {
     const auto& lane = lanes[li];
-    if (lane.type != "driving" && lane.type != "parking") continue;
-    const bool parking = lane.type == "parking";
+    if (lane.type != "driving" && !lane.for_stopping()) continue;
+    const bool parking = lane.for_stopping();
     const bool parked = wants_parked(parking);
     if (parking && !parked && !m_.lane && !moving_on_parking) continue;  // moving traffic stays off parking lanes
+    if (movable_ && parked && !parking && use_has_stopping) continue;
     std::vector<int> dirs;
     if (lane.direction == scene::TrafficDirection::Both) dirs = {1, -1};
     else dirs = {m_.wrong_way.value_or(false) ? -legal_dir(lane) : legal_dir(lane)};
     for (double s = 0.5; s < lane.length(); s += 1.0) {
       const Eigen::Vector2d pe = ego_.to_ego(scene_.lanes.point_at(int(li), s));
-      if (!in_region(region, pe)) continue;
+      if (!in_region(region, pe) || (looked && in_region(*looked, pe))) continue;
       for (int dir : dirs) {
         const auto ds = direction_score(int(li), s, dir, parked);
         if (!ds) continue;
@@ -252,7 +282,7 @@ std::vector<Candidate> Planner::relative_candidates() const {
   const std::string region = m_.relative->region;
   const double base_gap = (a.size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0;
   if (region == "at") {  // in its place: the anchor's own stretch of lane
-    const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].type == "parking") ||
+    const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
                         (a.speed_mps < 0.5 && nothing_said_about_motion());
     for (double shift = 0; shift <= 10; shift += 0.5)
       for (int sgn : {1, -1}) {
@@ -261,11 +291,11 @@ std::vector<Candidate> Planner::relative_candidates() const {
         if (shift == 0) break;
       }
     // Parked where a moving vehicle was: the kerb beside that place (traffic keeps using the lane).
-    if (parked && scene_.lanes.lanes()[size_t(lane)].type != "parking")
+    if (parked && !scene_.lanes.lanes()[size_t(lane)].for_stopping())
       for (size_t li = 0; li < scene_.lanes.lanes().size(); ++li) {
         const auto& l = scene_.lanes.lanes()[li];
         const auto pos = scene_.lanes.project(int(li), ap);
-        if (l.type != "parking" || std::abs(pos.lateral) > 5) continue;
+        if (!l.for_stopping() || std::abs(pos.lateral) > 5) continue;
         for (double shift = 0; shift <= 10; shift += 0.5)
           for (int sgn : {1, -1}) {
             const double s = pos.s + sgn * shift;
@@ -277,7 +307,7 @@ std::vector<Candidate> Planner::relative_candidates() const {
     for (double gap = base_gap; gap < base_gap + 45; gap += 0.5) {
       const double s = s0 + k * dir * gap;
       if (s < 0 || s > scene_.lanes.lanes()[size_t(lane)].length()) continue;
-      const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].type == "parking") ||
+      const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
                           (a.speed_mps == 0 && nothing_said_about_motion());
       Candidate c{lane, s, dir, parked, gap - base_gap};
       out.push_back(c);
@@ -291,7 +321,7 @@ std::vector<Candidate> Planner::relative_candidates() const {
       const double lateral = (scene_.lanes.point_at(int(li), pos.s) - ap).dot(left);
       if (side * lateral < 1.5 || side * lateral > 8) continue;
       const auto& l = scene_.lanes.lanes()[li];
-      const bool parked = wants_parked(l.type == "parking") || (a.speed_mps == 0 && nothing_said_about_motion());
+      const bool parked = wants_parked(l.for_stopping()) || (a.speed_mps == 0 && nothing_said_about_motion());
       const int d2 = std::cos(wrap(a.start.yaw - pos.tangent_yaw)) >= 0 ? 1 : -1;
       for (double shift = 0; shift < 12; shift += 0.5)
         for (int sgn : {1, -1}) {

@@ -30,7 +30,7 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
     if (std::abs(lat) < 1.5) return std::string("cutting in needs a start in a lane beside the ego's");
     m.action = lat > 0 ? "lane_change_right" : "lane_change_left";
   }
-  if (m.action == "straight" && speed > 0 && map.lanes()[size_t(c.lane)].type == "parking") {
+  if (m.action == "straight" && speed > 0 && map.lanes()[size_t(c.lane)].for_stopping()) {
     // Moving off a parking lane: it pulls out into the driving lane beside it.
     if (const auto side = pull_out_side(c)) m.action = *side > 0 ? "lane_change_left" : "lane_change_right";
   }
@@ -71,7 +71,7 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
     m.connector = std::move(turn->connector);
   } else if (m.action == "lane_change_left" || m.action == "lane_change_right") {
     // Pulling out of a parking lane starts at once and turns out sharply (the car ahead is close).
-    const bool pulling_out = map.lanes()[size_t(c.lane)].type == "parking";
+    const bool pulling_out = map.lanes()[size_t(c.lane)].for_stopping();
     const double start = pulling_out ? 0.5 : std::max(4.0, speed * 1.0);
     const double length = pulling_out ? std::max(10.0, speed * 1.5) : std::max(15.0, speed * 3.0);
     auto lc = lane_change_path(map, c.lane, c.s, c.dir, m.action == "lane_change_left" ? 1 : -1, total, start, length);
@@ -92,7 +92,8 @@ Evaluated Planner::evaluate(const Candidate& c) const {
   Evaluated e = evaluate_at(c, desired_speed(c.parked));
   if (e.first_collision < 0 || m_.speed || m_.speed_mps || m_.chase.value_or(false) || e.action == "static") return e;
   const auto pace = pace_of_traffic_behind(e);
-  if (!pace || *pace <= e.speed + 0.5 || *pace > speed_for("fast") * 1.5) return e;
+  // Not faster than a road allows: fast city traffic, or the ego's own pace on a motorway.
+  if (!pace || *pace <= e.speed + 0.5 || *pace > std::max(speed_for("fast") * 1.5, ego_speed_ * 1.4)) return e;
   Evaluated faster = evaluate_at(c, *pace);
   return faster.valid && faster.first_collision < 0 ? faster : e;
 }

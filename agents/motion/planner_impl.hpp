@@ -99,6 +99,8 @@ class Planner {
   std::optional<double> direction_score(int lane, double s, int dir, bool parked) const;
   std::vector<Candidate> region_candidates() const;
   std::vector<Candidate> region_candidates(bool moving_on_parking) const;
+  Region search_region(const std::string& placement, double widen) const;
+  void place_by_junction(const std::string& placement, double widen, Region& region) const;
   std::vector<Candidate> relative_candidates() const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
@@ -141,6 +143,7 @@ class Planner {
   double ego_speed_ = 0;              // the ego's mean recorded speed over the clip, m/s
   std::vector<bool> lane_beside_;     // "the left/right lane": a same-way lane beside each lane, that side
   std::vector<int> use_lanes_;        // "the bus lane": the lanes of the use said (lane_names.hpp)
+  std::optional<scene::LaneMap::JunctionSpan> junction_;  // "past the junction": the first one ahead
   std::vector<bool> branch_;          // with "the left/right lane": each lane a pocket or a ramp
 };
 

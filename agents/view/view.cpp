@@ -188,11 +188,11 @@ ViewChange parse_view(const std::string& instruction) {
                                      std::pair{"curb lane", "outer"}})
     if (const size_t at = text::find_phrase(w, phrase);
         at != std::string::npos && at >= 2 && (w[at - 1] == "the" || w[at - 1] == "an") &&
-        (w[at - 2] == "to" || w[at - 2] == "into" || w[at - 2] == "in" || w[at - 2] == "onto"))
+        text::has_any({w[at - 2]}, {"to", "into", "in", "onto", "from"}))
       v.to_lane = lane;
   // "into the bus lane": a lane named by its use.
   if (const auto name = language::find_lane_name(w);
-      name && name->begin >= 2 && w[name->begin - 1] == "the" && text::has_any({w[name->begin - 2]}, {"to", "into", "in", "onto"}))
+      name && name->begin >= 2 && w[name->begin - 1] == "the" && text::has_any({w[name->begin - 2]}, {"to", "into", "in", "onto", "from"}))
     v.to_lane = name->use;
   // The kerb's side is the road's to say: the sideways part said by it waits for the scene.
   if (v.translation_m && (*v.translation_m)[1] != 0 &&
@@ -250,33 +250,55 @@ ViewChange view_change_from_json(const nlohmann::json& j) {
 
 namespace {
 
-// The ego-frame sideways offset of the nearest lane of a kind beside the ego at frame 0.
-std::optional<double> lane_offset(const scene::Scene& scene, const std::string& kind) {
-  if (scene.frames.empty() || scene.lanes.empty()) return std::nullopt;
+// Lanes running beside the ego at frame 0 (parallel, level with it): their sideways offsets.
+struct LaneBeside {
+  int lane;
+  double lateral, along;  // along: +1 the ego's way, -1 the other way
+};
+std::vector<LaneBeside> lanes_beside(const scene::Scene& scene) {
   const auto& pose = scene.frames.front().ego_to_world;
   const Eigen::Vector2d ego = pose.translation().head<2>(), fwd = pose.linear().col(0).head<2>().normalized();
   const Eigen::Vector2d left(-fwd.y(), fwd.x());
-  const bool by_side = kind == "parking" || kind == "oncoming" || kind == "left" || kind == "right";
-  const auto of_use = by_side ? std::vector<int>{} : language::lanes_for_use(scene.lanes, kind);
-  std::optional<double> best;
+  std::vector<LaneBeside> out;
   for (size_t i = 0; i < scene.lanes.lanes().size(); ++i) {
-    const auto& lane = scene.lanes.lanes()[i];
     const auto at = scene.lanes.project(int(i), ego);
-    if (!by_side) {  // a lane of that use, beside the ego (not one that starts further on)
-      if (std::find(of_use.begin(), of_use.end(), int(i)) == of_use.end() || at.s <= 0.5 || at.s >= lane.length() - 0.5)
-        continue;
-      const double lateral = (scene.lanes.point_at(int(i), at.s) - ego).dot(left);
-      if (std::abs(lateral) < 20 && (!best || std::abs(lateral) < std::abs(*best))) best = lateral;
-      continue;
-    }
+    const Eigen::Vector2d p = scene.lanes.point_at(int(i), at.s) - ego;
     const double yaw = scene.lanes.travel_yaw_at(int(i), at.s);
     const double along = Eigen::Vector2d(std::cos(yaw), std::sin(yaw)).dot(fwd);
-    const double lateral = (scene.lanes.point_at(int(i), at.s) - ego).dot(left);
-    const bool fits = kind == "parking"    ? lane.type == "parking"
-                      : kind == "oncoming" ? lane.type == "driving" && along < -0.7
-                      : kind == "left"     ? lane.type == "driving" && along > 0.7 && lateral > 1.5
-                                           : lane.type == "driving" && along > 0.7 && lateral < -1.5;
-    if (fits && std::abs(lateral) < 20 && (!best || std::abs(lateral) < std::abs(*best))) best = lateral;
+    // Not one that starts or ends well ahead or behind (a car park's aisle 25 m on), not a cross street.
+    if (std::abs(p.dot(fwd)) > 10 || std::abs(along) < 0.7) continue;
+    out.push_back({int(i), p.dot(left), along});
+  }
+  return out;
+}
+
+// Whether the road reaches from the ego to `lateral` lane by lane: no gap wider than a median.
+bool contiguous(const std::vector<LaneBeside>& beside, double lateral) {
+  std::vector<double> steps{0.0};
+  for (const auto& b : beside)
+    if (b.lateral * lateral >= 0 && std::abs(b.lateral) <= std::abs(lateral)) steps.push_back(std::abs(b.lateral));
+  std::sort(steps.begin(), steps.end());
+  for (size_t k = 1; k < steps.size(); ++k)
+    if (steps[k] - steps[k - 1] > 8.5) return false;
+  return true;
+}
+
+// The ego-frame sideways offset of the nearest lane of a kind beside the ego at frame 0.
+std::optional<double> lane_offset(const scene::Scene& scene, const std::string& kind) {
+  if (scene.frames.empty() || scene.lanes.empty()) return std::nullopt;
+  const bool by_side = kind == "parking" || kind == "oncoming" || kind == "left" || kind == "right";
+  const auto of_use = by_side ? std::vector<int>{} : language::lanes_for_use(scene.lanes, kind);
+  const auto beside = lanes_beside(scene);
+  std::optional<double> best;
+  for (const auto& b : beside) {
+    const auto& lane = scene.lanes.lanes()[size_t(b.lane)];
+    const bool fits = !by_side             ? std::find(of_use.begin(), of_use.end(), b.lane) != of_use.end()
+                      : kind == "parking"  ? lane.type == "parking"
+                      : kind == "oncoming" ? lane.type == "driving" && b.along < 0
+                      : kind == "left"     ? lane.type == "driving" && b.along > 0 && b.lateral > 1.5
+                                           : lane.type == "driving" && b.along > 0 && b.lateral < -1.5;
+    if (fits && std::abs(b.lateral) < 20 && contiguous(beside, b.lateral) && (!best || std::abs(b.lateral) < std::abs(*best)))
+      best = b.lateral;
   }
   return best;
 }
@@ -301,8 +323,8 @@ ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, doub
     if (const auto target = lane_offset(scene, *change.to_lane)) {
       if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
       (*change.translation_m)[1] = *target - current_y_m;
+      change.to_lane.reset();
     }
-    change.to_lane.reset();
   }
   return change;
 }

@@ -32,7 +32,7 @@ ViewChange parse_view(const std::string& instruction);
 bool keeps_left(const scene::Scene& scene);
 // toward_kerb_m and to_lane turned into a sideways translation for the scene's handedness and
 // lanes, from the view's current sideways offset current_y_m. A lane the map does not have
-// leaves the change without it (and so without a sideways move).
+// beside the ego stays in to_lane, unresolved: the caller says so.
 ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, double current_y_m = 0);
 nlohmann::json to_json(const ViewChange& v);
 ViewChange view_change_from_json(const nlohmann::json& j);

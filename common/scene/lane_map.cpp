@@ -204,6 +204,31 @@ std::vector<LaneCrossing> LaneMap::junctions(int index, double reach) const {
   return out;
 }
 
+std::optional<LaneMap::JunctionSpan> LaneMap::junction_ahead(const Eigen::Vector2d& p, double yaw) const {
+  const auto wrap = [](double a) { return std::remainder(a, 2 * std::numbers::pi); };
+  for (const auto& on : containing(p)) {
+    const auto& lane = lanes_[size_t(on.lane)];
+    if (lane.type != "driving" || std::cos(wrap(travel_yaw_at(on.lane, on.s) - yaw)) < 0.7) continue;
+    const int dir = lane.direction == TrafficDirection::Backward ? -1 : 1;
+    auto meets = crossings(on.lane);
+    for (const auto& j : junctions(on.lane, 18.0)) meets.push_back(j);
+    std::vector<double> ahead;
+    for (const auto& m : meets) {
+      const double d = dir * (m.s_self - on.s);
+      if (d > 0.5 && lanes_[size_t(m.other)].type == "driving" &&
+          std::abs(std::cos(wrap(travel_yaw_at(m.other, m.s_other) - travel_yaw_at(on.lane, m.s_self)))) < 0.7)
+        ahead.push_back(d);
+    }
+    if (ahead.empty()) return std::nullopt;
+    std::sort(ahead.begin(), ahead.end());
+    JunctionSpan span{ahead.front(), ahead.front()};
+    for (double d : ahead)
+      if (d - span.from <= 15) span.to = d;
+    return span;
+  }
+  return std::nullopt;
+}
+
 bool LaneMap::merges(int index) const {
   const auto& l = lanes_[size_t(index)];
   if (l.type != "driving") return false;
@@ -213,8 +238,14 @@ bool LaneMap::merges(int index) const {
   for (size_t i = 0; i < lanes_.size(); ++i) {
     if (int(i) == index || lanes_[i].type != "driving") continue;
     const auto pos = project(int(i), end);
-    if (pos.s <= 1 || pos.s >= lanes_[i].length() - 1) continue;
-    if (std::abs(pos.lateral) < 2 || std::abs(pos.lateral) > 5) continue;
+    if (pos.s <= 1 || pos.s >= lanes_[i].length() - 1 || std::abs(pos.lateral) > 5) continue;
+    if (std::abs(pos.lateral) < 2) {
+      // A lane drawn tapering into the other (a lane drop): beside it some way back, not its continuation.
+      const double back_s = l.direction == TrafficDirection::Backward ? std::min(l.length(), end_s + 30)
+                                                                      : std::max(0.0, end_s - 30);
+      const double before = std::abs(project(int(i), point_at(index, back_s)).lateral);
+      if (before < 2 || before > 5) continue;
+    }
     if (std::abs(std::remainder(travel_yaw_at(int(i), pos.s) - yaw, 2 * std::numbers::pi)) < std::numbers::pi / 8)
       return true;
   }

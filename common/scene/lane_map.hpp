@@ -21,6 +21,8 @@ struct Lane {
   std::vector<double> s;                   // arc length at each centreline point (filled by LaneMap)
 
   double length() const { return s.empty() ? 0.0 : s.back(); }
+  // A place vehicles stand, not drive: a parking lane or a (hard) shoulder.
+  bool for_stopping() const { return type == "parking" || type == "shoulder"; }
 };
 
 // Where a point is relative to one lane.
@@ -68,12 +70,20 @@ class LaneMap {
   // ending within `reach` of another lane. s_other is where the other lane is joined.
   std::vector<LaneCrossing> junctions(int lane, double reach) const;
   // Whether a driving lane's legal travel ends beside another driving lane of the same way (2-5 m
-  // across), not at a crossing: an on-ramp or a merging lane.
+  // across), or drawn tapering into it from beside it, not at a crossing: an on-ramp, a merging
+  // lane, a lane that ends.
   bool merges(int lane) const;
   // Whether a driving lane's legal travel starts beside another driving lane of the same way (2-5
   // m across) and it ends short of that lane's end: a turn pocket or an exit lane opening off it.
   // Returns the side it opens to (+1 left, -1 right), 0 when it does not.
   int diverges(int lane) const;
+  // The first junction ahead of a vehicle at p heading yaw, on the driving lane it is on: where
+  // driving lanes cross or meet that lane at more than 45 deg (a side street, a crossroads), as
+  // distances along the lane from p to the first and the last of those within 15 m of the first.
+  struct JunctionSpan {
+    double from = 0, to = 0;
+  };
+  std::optional<JunctionSpan> junction_ahead(const Eigen::Vector2d& p, double yaw) const;
   // Lanes whose id names them by a word ("bus" finds "east_bus_lane", "lay_by" is found by "lay"
   // and "by"): the map's own vocabulary for lanes a user names ("the bus lane", "the lay-by").
   std::vector<int> named(const std::string& word) const;

@@ -16,44 +16,22 @@
 #include "agents/motion/motion_intent.hpp"
 #include "agents/view/view.hpp"
 #include "common/scene/scene.hpp"
+#include "tests/unit/layout_chat.hpp"
 
 using namespace chatsim;
-namespace fs = std::filesystem;
+using chatsim::testing::LayoutChat;
+using chatsim::testing::straight_lane;
 
 namespace {
 
-scene::Lane straight(const std::string& id, double x0, double y0, double x1, double y1) {
-  scene::Lane l;
-  l.id = id;
-  l.centerline = {{x0, y0, 0}, {(x0 + x1) / 2, (y0 + y1) / 2, 0}, {x1, y1, 0}};
-  return l;
-}
-
 // Two through lanes east and a pocket opening off the left one at x=30 and ending at x=75.
 scene::LaneMap pocket_map(const std::string& pocket_id) {
-  auto pocket = straight(pocket_id, 30, 3.5, 40, 7);
+  auto pocket = straight_lane(pocket_id, 30, 3.5, 40, 7);
   pocket.centerline.push_back({75, 7, 0});
-  return scene::LaneMap({straight("east_kerb", -60, 0, 220, 0), straight("east_inner", -60, 3.5, 220, 3.5), pocket});
+  return scene::LaneMap(
+      {straight_lane("east_kerb", -60, 0, 220, 0), straight_lane("east_inner", -60, 3.5, 220, 3.5), pocket});
 }
 
-// One conversation manager on one of the blind layouts, with the offline backend: chat(id, command)
-// gives the edit state after that round.
-class LayoutChat {
- public:
-  explicit LayoutChat(const std::string& layout)
-      : dir_((fs::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts" / layout).string()),
-        backend_(agents::llm::make_backend("offline")),
-        manager_(agents::local_caller(backend_), backend_) {}
-  nlohmann::json operator()(const std::string& id, const std::string& command) {
-    return manager_.chat(id, dir_, command).edit_state;
-  }
-  const std::string& dir() const { return dir_; }
-
- private:
-  std::string dir_;
-  std::shared_ptr<agents::llm::Backend> backend_;
-  agents::manager::Manager manager_;
-};
 
 }  // namespace
 
@@ -66,7 +44,8 @@ TEST(LaneUse, APocketOpeningOffALaneIsATurnLaneOnItsSide) {
   EXPECT_TRUE(agents::language::lanes_for_use(map, "turn_right").empty());
   EXPECT_TRUE(agents::language::lanes_for_use(map, "bus").empty());
   // A map that names its lanes is read by the names: "east_bus_lane" is the bus lane.
-  const scene::LaneMap named({straight("east_bus_lane", -60, -3.5, 220, -3.5), straight("lay_by", 5, -3, 30, -3)});
+  const scene::LaneMap named(
+      {straight_lane("east_bus_lane", -60, -3.5, 220, -3.5), straight_lane("lay_by", 5, -3, 30, -3)});
   EXPECT_EQ(agents::language::lanes_for_use(named, "bus"), std::vector<int>{0});
   EXPECT_EQ(named.named("by"), std::vector<int>{1});
   EXPECT_TRUE(named.named("bu").empty());  // whole words only

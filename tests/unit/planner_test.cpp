@@ -224,17 +224,25 @@ TEST(Planner, TheRightLaneTheRampAndStrictLanes) {
   r = plan_motion(ramp, req);
   ASSERT_TRUE(r.ok) << r.reason;
   EXPECT_EQ(r.lane, "on_ramp");
-  // The one-way layout's left lane: its recorded traffic runs into anything slow put there.
+  // The one-way layout's left lane: its recorded traffic runs into anything slow put near; the
+  // second look goes further up that lane (beyond where that traffic gets to), and says so.
   const auto oneway = chatsim::scene::load_scene(dir / "blind-oneway");
   req.obstacles = scene_obstacles(oneway, {});
   req.intent = parse_motion("a car in the left lane driving slowly");
   req.strict = true;
   r = plan_motion(oneway, req);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.reason.find("left lane"), std::string::npos) << r.reason;
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_EQ(r.lane, "lane_left");
+  EXPECT_GT(r.trajectory.front().x, 70.0);
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes.front().find("further"), std::string::npos) << r.notes.front();
+  // Slow in the left lane 20 m ahead: the distance holds, so another lane, and said.
+  req.intent = parse_motion("a car in the left lane 20 m ahead driving slowly");
   req.strict = false;
-  r = plan_motion(oneway, req);  // not strict: elsewhere, and said
+  r = plan_motion(oneway, req);
   ASSERT_TRUE(r.ok) << r.reason;
   EXPECT_NE(r.lane, "lane_left");
   EXPECT_FALSE(r.notes.empty());
+  req.strict = true;
+  EXPECT_FALSE(plan_motion(oneway, req).ok);
 }
