@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
-"""Layouts of the blind set v19, none like an earlier one: a motorway, three lanes each way with a hard
-shoulder (lane type "shoulder", which no earlier layout has) and an exit slip road; a grid of one-way
-streets, a contraflow cycle lane and a delivery truck stopped in the ego's lane; a road whose left
-lane ends (drawn tapering into the right one) with a driveway into a car park on the right.
+"""Layouts of the blind sets v19 and v20, none like an earlier one. v19: a motorway, three lanes
+each way with a hard shoulder (lane type "shoulder", which no earlier layout has) and an exit slip
+road; a grid of one-way streets, a contraflow cycle lane and a delivery truck stopped in the ego's lane; a road whose left
+lane ends (drawn tapering into the right one) with a driveway into a car park on the right. v20:
+a one-way road whose left lane forks off to the north-east; a two-way street with a zebra
+crossing, a cycle lane and a bus stop bay.
 Run by make_layouts.py, or alone: python3 tests/data/layouts/more_layouts.py (deterministic).
 """
 import math
 
-from layout_lib import lane, line, obj, static, track_along, write
+from layout_lib import SIZES, lane, line, obj, static, track_along, write
 
 
 def motorway():
@@ -86,10 +88,55 @@ def lane_drop():
           "car park on the right", lanes, line(-60, 0, 220, 0), 8, objects)
 
 
+def fork():
+    """A one-way road east, two lanes (ego in the right one, y=0), whose left lane bears left at x=60
+    into a branch heading 30 deg north-east while the right lane runs on east; parking on the right
+    to x=50. Written for set v20."""
+    arc = [[60 + 60 * math.sin(math.radians(a)), 63.5 - 60 * math.cos(math.radians(a)), 0.0] for a in range(5, 31, 5)]
+    end = arc[-1]
+    branch = line(-60, 3.5, 60, 3.5)[:-1] + [[60.0, 3.5, 0.0]] + arc + [
+        [end[0] + 120 * math.cos(math.radians(30)), end[1] + 120 * math.sin(math.radians(30)), 0.0]]
+    east = line(-60, 0, 220, 0)
+    lanes = [lane("east_through", east), lane("north_branch", branch),
+             lane("parking_right", line(-60, -3.0, 50, -3.0), 2.5, "parking")]
+    objects = [obj(1, "vehicle.car", track_along(branch, 85, 7), "red"),
+               obj(2, "vehicle.truck", track_along(east, 100, 6), "green"),
+               obj(3, "vehicle.motorcycle", track_along(east, 45, 6), "black"),
+               obj(4, "vehicle.car", static(5, -3.0), "white"), obj(5, "vehicle.car", static(30, -3.0), "blue", SIZES["suv"]),
+               obj(6, "vehicle.car", track_along(branch, 30, 6), "silver"),
+               obj(7, "vehicle.bus.rigid", track_along(east, 190, 8), "yellow")]
+    write("blind-fork", "hand-made layout: a one-way road whose left lane forks off to the north-east", lanes, east, 5,
+          objects)
+
+
+def zebra():
+    """A two-way street (ego east, y=0; west y=3.5) with a zebra crossing at x=30, a cycle lane on the
+    right (y=-2.25) and a bus stop bay (x 42-62, y=-3.25) interrupting it, parking on the left
+    (y=6.25). Written for set v20."""
+    west = line(220, 3.5, -60, 3.5)
+    lanes = [lane("east", line(-60, 0, 220, 0)), lane("west", west),
+             lane("cycle_lane_a", line(-60, -2.25, 40, -2.25), 1.5), lane("cycle_lane_b", line(64, -2.25, 220, -2.25), 1.5),
+             lane("bus_stop_bay", line(42, -3.25, 62, -3.25), 3.0, "parking"),
+             lane("parking_left", line(220, 6.25, -60, 6.25), 2.5, "parking")]
+    objects = [obj(1, "vehicle.bus.rigid", static(52, -3.25), "red"),
+               obj(2, "vehicle.bicycle", track_along(line(-60, -2.25, 40, -2.25), 65, 2.5), "blue"),
+               obj(3, "human.pedestrian.adult", track_along(line(30, -5, 30, 9), 0, 1.2)),
+               obj(4, "human.pedestrian.adult", track_along(line(29, 9, 29, -5), 2, 1.0)),
+               obj(5, "vehicle.car", static(22, 0.0), "black"),
+               obj(6, "vehicle.car", track_along(west, 100, 8), "white"),
+               obj(7, "vehicle.car", static(10, 6.25, math.pi), "silver"), obj(8, "vehicle.car", static(40, 6.25, math.pi), "green"),
+               obj(9, "vehicle.car", static(75, 6.25, math.pi), "yellow"),
+               obj(10, "vehicle.car", track_along(line(-60, 0, 220, 0), 40, 1.5), "orange")]
+    write("blind-zebra", "hand-made layout: a two-way street with a zebra crossing, a cycle lane and a bus stop bay",
+          lanes, line(-60, 0, 220, 0), 1.0, objects)
+
+
 def main():
     motorway()
     one_way_grid()
     lane_drop()
+    fork()
+    zebra()
 
 
 if __name__ == "__main__":
