@@ -105,3 +105,10 @@ TEST(Places, ABareNumberAfterATurningVerbIsAnAngle) {
   agents::text::bare_turns_to_degrees(w);
   EXPECT_EQ(agents::text::join(w), "pan 20 degrees to the right then move 3 m forward");
 }
+
+TEST(Places, TrafficMadeHeavyIsABusyRoadOnTheRoadNamed) {
+  LayoutChat fork("blind-fork");
+  const auto added = fork("a", "make the traffic heavy on the branch road")["added"];
+  ASSERT_GE(added.size(), 3u);
+  for (const auto& v : added) EXPECT_EQ(v["intent"]["lane"], "north_branch");
+}
