@@ -69,8 +69,9 @@ bool classify_whole(const Words& c, Instruction& in) {
     return true;
   }
   // "make the traffic heavy on the branch road": traffic with a word of density anywhere in the clause.
-  const bool dense_traffic = has_any(c, {"traffic"}) && has_any(c, {"heavy", "heavier", "dense", "denser", "busier",
-                                                                     "thick", "thicker", "crowded", "packed", "intense"});
+  const bool dense_traffic =
+      has_any(c, {"traffic"}) &&
+      has_any(c, {"heavy", "heavier", "dense", "denser", "busier", "thick", "thicker", "crowded", "packed", "intense"});
   if (dense_traffic || has_any(c, {"busy road", "busy street", "heavy traffic", "rush hour", "lots of traffic",
                                    "crowded road", "dense traffic", "busy", "more traffic", "lot of traffic"})) {
     in.kind = "busy_road";

@@ -192,7 +192,8 @@ ViewChange parse_view(const std::string& instruction) {
       v.to_lane = lane;
   // "into the bus lane": a lane named by its use.
   if (const auto name = language::find_lane_name(w);
-      name && name->begin >= 2 && w[name->begin - 1] == "the" && text::has_any({w[name->begin - 2]}, {"to", "into", "in", "onto", "from"}))
+      name && name->begin >= 2 && w[name->begin - 1] == "the" &&
+      text::has_any({w[name->begin - 2]}, {"to", "into", "in", "onto", "from"}))
     v.to_lane = name->use;
   // The kerb's side is the road's to say: the sideways part said by it waits for the scene.
   if (v.translation_m && (*v.translation_m)[1] != 0 &&
@@ -297,7 +298,8 @@ std::optional<double> lane_offset(const scene::Scene& scene, const std::string& 
                       : kind == "oncoming" ? lane.type == "driving" && b.along < 0
                       : kind == "left"     ? lane.type == "driving" && b.along > 0 && b.lateral > 1.5
                                            : lane.type == "driving" && b.along > 0 && b.lateral < -1.5;
-    if (fits && std::abs(b.lateral) < 20 && contiguous(beside, b.lateral) && (!best || std::abs(b.lateral) < std::abs(*best)))
+    if (fits && std::abs(b.lateral) < 20 && contiguous(beside, b.lateral) &&
+        (!best || std::abs(b.lateral) < std::abs(*best)))
       best = b.lateral;
   }
   return best;

@@ -120,8 +120,10 @@ TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
                                     std::pair{"commands-blind-v12.jsonl", 0.98}, std::pair{"commands-blind-v13.jsonl", 0.96},
                                     std::pair{"commands-blind-v14.jsonl", 0.92}, std::pair{"commands-blind-v15.jsonl", 0.94},
                                     std::pair{"commands-blind-v16.jsonl", 0.92},
-                                    std::pair{"commands-blind-v17.jsonl", 0.94}, std::pair{"commands-blind-v18.jsonl", 0.94},
-                                    std::pair{"commands-blind-v19.jsonl", 0.96}, std::pair{"commands-blind-v20.jsonl", 0.96}}) {
+                                    std::pair{"commands-blind-v17.jsonl", 0.94},
+                                    std::pair{"commands-blind-v18.jsonl", 0.94},
+                                    std::pair{"commands-blind-v19.jsonl", 0.96},
+                                    std::pair{"commands-blind-v20.jsonl", 0.96}}) {
     const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file);
     ASSERT_GE(s.total, 50) << file;
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
