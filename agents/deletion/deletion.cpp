@@ -16,6 +16,11 @@ namespace {
 using Words = std::vector<std::string>;
 
 // Splits "the yellow car and the green one" into noun phrases.
+// Words that name nothing: "the van as well, please".
+bool is_filler(const std::string& w) {
+  return text::has_any({w}, {"well", "too", "also", "please", "now", "then", "again", "anyway", "instead"});
+}
+
 std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
   std::vector<Words> out(1);
   for (size_t i = begin; i < end; ++i) {
@@ -38,11 +43,7 @@ std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
     out.back().push_back(w[i]);
   }
   // "the broken-down car as well": a phrase of fillers only names nothing.
-  std::erase_if(out, [](const Words& p) {
-    return std::all_of(p.begin(), p.end(), [](const std::string& x) {
-      return text::has_any({x}, {"well", "too", "also", "please", "now", "then", "again", "anyway", "instead"});
-    });
-  });
+  std::erase_if(out, [](const Words& p) { return std::all_of(p.begin(), p.end(), is_filler); });
   return out;
 }
 
@@ -65,12 +66,11 @@ std::optional<std::string> unknown_head(const Words& said) {
     for (size_t k = name->begin; k < name->end; ++k) p[k] = "_";
   for (const auto& word : p) {
     static const char* skip[] = {"the", "a", "an", "that", "this", "those", "these", "every", "all", "each", "any", "my",
-                                 "too", "also", "well", "instead", "again", "please", "now", "then", "there", "here",
-                                 "thanks", "thank", "you", "anyway", "_"};
+                                 "there", "here", "thanks", "thank", "you", "_"};
     static const char* pronouns[] = {"whatever", "anything", "something", "whichever", "everything", "one", "ones"};
     if (std::find(std::begin(pronouns), std::end(pronouns), word) != std::end(pronouns)) return std::nullopt;
-    if (std::find(std::begin(skip), std::end(skip), word) != std::end(skip) || lexicon::is_color_word(word) ||
-        text::is_number_word(word))
+    if (std::find(std::begin(skip), std::end(skip), word) != std::end(skip) || is_filler(word) ||
+        lexicon::is_color_word(word) || text::is_number_word(word))
       continue;
     if (lexicon::is_domain_word(word)) return std::nullopt;
     // "the zorblax": a make or name nobody knows; recorded objects carry no make to select by.
@@ -78,23 +78,6 @@ std::optional<std::string> unknown_head(const Words& said) {
     return word;
   }
   return std::nullopt;
-}
-
-// "past the junction", "before the crossing": where along the road, not the cross street's lane;
-// the words are blanked.
-std::optional<std::string> blank_junction_place(Words& p) {
-  std::optional<std::string> side;
-  for (const char* where : {"past", "after", "beyond", "before", "short of", "this side of"})
-    for (const char* place : {"the junction", "the crossing", "the intersection", "the crossroads", "the side street",
-                              "the side road", "the cross street", "the lights", "the traffic lights"}) {
-      const std::string phrase = std::string(where) + " " + place;
-      for (size_t at = text::find_phrase(p, phrase); at != std::string::npos; at = text::find_phrase(p, phrase)) {
-        for (size_t k = 0; k < text::words(phrase).size(); ++k) p[at + k] = "_";
-        const std::string wh = where;
-        side = wh == "past" || wh == "after" || wh == "beyond" ? "after" : "before";
-      }
-    }
-  return side;
 }
 
 // The lane a phrase names, if any.
@@ -227,7 +210,8 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   if (text::has_any(p, {"all", "every", "each", "any"})) s.quantity = "all";
   const auto colors = lexicon::find_colors(p);
   if (!colors.empty()) s.color = lexicon::color_class(colors.front().rgb);
-  s.junction = blank_junction_place(p);
+  // "near the junction" narrows nothing: only beyond or short of it does.
+  if (const auto junction = language::blank_junction_place(p); junction != "near") s.junction = junction;
   s.lane = lane_words(p);
   // "across the street", "on my side": a half of the road, parked cars included.
   if (text::has_any(p, {"across the street", "across the road", "far side", "other side of the road", "other side of the street",

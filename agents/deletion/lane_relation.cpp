@@ -72,13 +72,8 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
     road_side_by_nearest_lane(lanes, p, same_way, r);
     return r;
   }
-  if (lanes.lanes()[size_t(own)].type == "shoulder") {  // a map that draws the hard shoulder
-    r.shoulder = true;
-    road_side_by_nearest_lane(lanes, p, same_way, r);
-    return r;
-  }
-  if (lanes.lanes()[size_t(own)].type == "parking") {
-    r.parking = true;
+  if (lanes.lanes()[size_t(own)].for_stopping()) {  // a parking lane, or a map that draws the hard shoulder
+    (lanes.lanes()[size_t(own)].type == "parking" ? r.parking : r.shoulder) = true;
     road_side_by_nearest_lane(lanes, p, same_way, r);
     return r;
   }

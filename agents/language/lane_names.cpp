@@ -89,6 +89,24 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
   return std::nullopt;
 }
 
+std::optional<std::string> blank_junction_place(std::vector<std::string>& w) {
+  static const std::pair<const char*, const char*> kWhere[] = {
+      {"past", "after"},          {"after", "after"},     {"beyond", "after"},       {"before", "before"},
+      {"short of", "before"},     {"this side of", "before"}, {"ahead of", "before"}, {"in front of", "before"},
+      {"near", "near"}};
+  std::optional<std::string> side;
+  for (const auto& [where, meaning] : kWhere)
+    for (const char* place : {"the junction", "the crossing", "the intersection", "the crossroads", "the side street",
+                              "the side road", "the cross street", "the lights", "the traffic lights"}) {
+      const std::string phrase = std::string(where) + " " + place;
+      for (size_t at = text::find_phrase(w, phrase); at != std::string::npos; at = text::find_phrase(w, phrase)) {
+        for (size_t k = 0; k < text::words(phrase).size(); ++k) w[at + k] = "_";
+        side = meaning;
+      }
+    }
+  return side;
+}
+
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use) {
   const bool turn = use.starts_with("turn");
   const int side = use == "turn_left" ? 1 : use == "turn_right" ? -1 : 0;
@@ -98,10 +116,8 @@ std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use
       if (std::find(out.begin(), out.end(), lane) == out.end()) out.push_back(lane);
   // A roundabout the ids do not name: a lane whose centreline closes on itself.
   if (out.empty() && use == "roundabout")
-    for (size_t i = 0; i < map.lanes().size(); ++i) {
-      const auto& c = map.lanes()[i].centerline;
-      if (c.size() > 3 && (c.front() - c.back()).head<2>().norm() < 1.0) out.push_back(int(i));
-    }
+    for (size_t i = 0; i < map.lanes().size(); ++i)
+      if (map.lanes()[i].closes_on_itself()) out.push_back(int(i));
   if (!out.empty() || !turn) return out;
   for (size_t i = 0; i < map.lanes().size(); ++i) {
     const int opens = map.diverges(int(i));

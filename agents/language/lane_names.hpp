@@ -22,6 +22,10 @@ struct LaneName {
 // The first lane named by its use in w, if any.
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w);
 
+// "past the junction", "before the crossing", "near the lights": where along the road, by the
+// first junction ahead (after, before or near), not the cross street's lane; the words are blanked.
+std::optional<std::string> blank_junction_place(std::vector<std::string>& w);
+
 // The map's lanes of that use: those whose id has the use's word; for turn lanes, with no such
 // id, the lanes that open off another (on the side said). None: the map does not name it.
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use);

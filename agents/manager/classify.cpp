@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "agents/language/lane_names.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 
@@ -187,9 +188,11 @@ Words fill_addition(const Words& c) {
     return c;
   const size_t link = text::find_any(c, {"full of", "filled with", "packed with", "lined with", "with"});
   // "fill the car park", "fill up the parking lane": a place for parking, filled with parked cars.
+  const auto area = language::find_lane_name(c);
   if (link == std::string::npos && (c[0] == "fill" || c[0] == "pack") &&
-      text::has_any(c, {"car park", "carpark", "parking lot", "parking lane", "parking lanes", "parking spaces",
-                        "parking spots", "parking bays", "parking garage", "the bays", "the spaces"})) {
+      ((area && area->use == "car_park") ||
+       text::has_any(c, {"parking lane", "parking lanes", "parking spaces", "parking spots", "parking bays", "the bays",
+                         "the spaces"}))) {
     Words out{"add", "a", "row", "of", "parked", "cars", "in"};
     out.insert(out.end(), c.begin() + (c[1] == "up" ? 2 : 1), c.end());
     return out;

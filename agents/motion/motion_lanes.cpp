@@ -33,23 +33,6 @@ std::optional<std::string> blank_turn_targets(Words& w, bool turning) {
   return side_said;
 }
 
-std::optional<std::string> blank_junction_location(Words& w) {
-  std::optional<std::string> side;
-  for (const char* where : {"before", "after", "past", "beyond", "short of", "ahead of", "in front of", "near"})
-    for (const char* street : {"the side street", "the side road", "the junction", "the crossing", "the cross street",
-                               "the intersection", "the crossroads", "the lights", "the traffic lights"}) {
-      const std::string p = std::string(where) + " " + street;
-      for (size_t at = find_phrase(w, p); at != std::string::npos; at = find_phrase(w, p)) {
-        for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
-        const std::string wh = where;
-        side = wh == "after" || wh == "past" || wh == "beyond" ? "after"
-               : wh == "near"                                  ? "near"
-                                                               : "before";
-      }
-    }
-  return side;
-}
-
 std::optional<std::string> find_lane(const Words& w_in) {
   // "the wrong side of the road" is how it drives (wrong_way), not the roadside.
   Words w = w_in;

@@ -11,9 +11,6 @@ using Words = std::vector<std::string>;
 // "turns left into the side street on the left": the turn's target words are blanked; returns the
 // side the target street lies on, if said. "down the side street" only when turning.
 std::optional<std::string> blank_turn_targets(Words& w, bool turning);
-// "before the side street", "just past the junction": where along the road (before, after or
-// near the junction); its words blanked.
-std::optional<std::string> blank_junction_location(Words& w);
 // The lane said: ego, oncoming, cross, ramp, parking, left, right.
 std::optional<std::string> find_lane(const Words& w);
 // "changing into the right lane": lane_change_left/right/ego, its words blanked.

@@ -337,7 +337,7 @@ MotionIntent parse_motion(const std::string& instruction) {
   const auto change_to = lane_change_to(w);
   const bool turning = has_any(w, {"turn", "turns", "turning"});
   const auto target_side = blank_turn_targets(w, turning);
-  const auto junction = turning ? std::nullopt : blank_junction_location(w);
+  const auto junction = turning ? std::nullopt : language::blank_junction_place(w);
   const bool by_junction = junction.has_value();
   if (junction && *junction != "near") m.junction = junction;
   m.lane = find_lane(w);

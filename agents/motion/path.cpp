@@ -79,15 +79,9 @@ void append_hermite(Path& path, const Eigen::Vector2d& to, double to_yaw, double
   }
 }
 
-// How far from a lane's centreline a side street may start and still be turned into from it:
-// across two more lanes and a parking lane.
-constexpr double kJunctionReachM = 18.0;
+using scene::kJunctionReachM;
 
 namespace {
-
-bool closes_on_itself(const scene::Lane& l) {
-  return l.centerline.size() > 3 && (l.centerline.front() - l.centerline.back()).head<2>().norm() < 1.0;
-}
 
 // A turn at a roundabout: the ring the lane runs into, followed its way round to the first exit
 // leaving the way the turn goes (left +90 deg, right -90 deg from the way in), or to the nth exit
@@ -100,13 +94,13 @@ std::optional<TurnPlan> roundabout_path(const scene::LaneMap& map, int lane, dou
   const Eigen::Vector2d end = map.point_at(lane, end_s);
   for (size_t r = 0; r < map.lanes().size(); ++r) {
     const auto& ring = map.lanes()[r];
-    if (!closes_on_itself(ring) || ahead < 1 || std::abs(map.project(int(r), end).lateral) > kJunctionReachM) continue;
+    if (!ring.closes_on_itself() || ahead < 1 || std::abs(map.project(int(r), end).lateral) > kJunctionReachM) continue;
     const double around = ring.length(), s_in = map.project(int(r), end).s;
     const int ring_dir = ring.direction == scene::TrafficDirection::Backward ? -1 : 1;
     std::vector<std::pair<double, int>> exits;  // arc along the ring to each, its lane
     for (size_t e = 0; e < map.lanes().size(); ++e) {
       const auto& out = map.lanes()[e];
-      if (e == r || int(e) == lane || out.type != "driving" || closes_on_itself(out)) continue;
+      if (e == r || int(e) == lane || out.type != "driving" || out.closes_on_itself()) continue;
       const double start_s = out.direction == scene::TrafficDirection::Backward ? out.length() : 0.0;
       const auto on_ring = map.project(int(r), map.point_at(int(e), start_s));
       if (std::abs(on_ring.lateral) > kJunctionReachM) continue;

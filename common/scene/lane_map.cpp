@@ -211,7 +211,7 @@ std::optional<LaneMap::JunctionSpan> LaneMap::junction_ahead(const Eigen::Vector
     if (lane.type != "driving" || std::cos(wrap(travel_yaw_at(on.lane, on.s) - yaw)) < 0.7) continue;
     const int dir = lane.direction == TrafficDirection::Backward ? -1 : 1;
     auto meets = crossings(on.lane);
-    for (const auto& j : junctions(on.lane, 18.0)) meets.push_back(j);
+    for (const auto& j : junctions(on.lane, kJunctionReachM)) meets.push_back(j);
     std::vector<double> ahead;
     for (const auto& m : meets) {
       const double d = dir * (m.s_self - on.s);

@@ -12,6 +12,10 @@ namespace chatsim::scene {
 
 enum class TrafficDirection { Forward, Backward, Both };
 
+// How far from a lane's centreline a side street may start and still be turned into from it:
+// across two more lanes and a parking lane (LaneMap::junctions' reach for turns and junctions).
+constexpr double kJunctionReachM = 18.0;
+
 struct Lane {
   std::string id;
   std::string type = "driving";            // driving, parking, ...
@@ -23,6 +27,10 @@ struct Lane {
   double length() const { return s.empty() ? 0.0 : s.back(); }
   // A place vehicles stand, not drive: a parking lane or a (hard) shoulder.
   bool for_stopping() const { return type == "parking" || type == "shoulder"; }
+  // A ring (a roundabout): the centreline ends where it starts.
+  bool closes_on_itself() const {
+    return centerline.size() > 3 && (centerline.front() - centerline.back()).head<2>().norm() < 1.0;
+  }
 };
 
 // Where a point is relative to one lane.
