@@ -27,9 +27,9 @@ def camera(name, yaw_deg):
             "distortion": {"model": "none"}, "sensor_to_ego": [round(v, 12) for row in m for v in row]}
 
 
-def pose(x, y, yaw):
+def pose(x, y, yaw, z=0):
     c, s = math.cos(yaw), math.sin(yaw)
-    return [c, -s, 0, x, s, c, 0, y, 0, 0, 1, 0, 0, 0, 0, 1]
+    return [c, -s, 0, x, s, c, 0, y, 0, 0, 1, z, 0, 0, 0, 1]
 
 
 def sample(pts, dist):
@@ -72,13 +72,46 @@ def obj(n, category, track, color=None, size=None):
     return o
 
 
-def write(name, source, lanes, ego_pts, ego_speed, objects):
+class Placement:
+    """Where a layout drawn in its own frame (ego starting at the origin, heading +x) stands in the
+    world: turned by yaw_deg about the origin, then moved by (tx, ty); ground(x, y) gives the road's
+    height at a local point (a hill). The default leaves the layout as drawn."""
+
+    def __init__(self, yaw_deg=0.0, tx=0.0, ty=0.0, ground=None):
+        self.yaw, self.tx, self.ty = math.radians(yaw_deg), tx, ty
+        self.ground = ground or (lambda x, y: 0.0)
+
+    def point(self, x, y, z_above=0.0):
+        c, s = math.cos(self.yaw), math.sin(self.yaw)
+        return [round(c * x - s * y + self.tx, 3), round(s * x + c * y + self.ty, 3),
+                round(self.ground(x, y) + z_above, 3)]
+
+    def lanes(self, lanes):
+        return [dict(ln, centerline=[self.point(p[0], p[1]) for p in ln["centerline"]]) for ln in lanes]
+
+    def objects(self, objects):
+        out = []
+        for o in objects:
+            track = [dict(t, center=self.point(t["center"][0], t["center"][1], t["center"][2]),
+                          yaw=round(t["yaw"] + self.yaw, 4)) for t in o["track"]]
+            out.append(dict(o, track=track))
+        return out
+
+
+def write(name, source, lanes, ego_pts, ego_speed, objects, placement=None):
     d = os.path.join(HERE, name)
     os.makedirs(d, exist_ok=True)
     frames = []
+    if placement:
+        lanes, objects = placement.lanes(lanes), placement.objects(objects)
     for f in range(FRAMES):
         x, y, yaw = sample(ego_pts, ego_speed * f / HZ - sample_origin(ego_pts))
-        frames.append({"index": f, "timestamp_s": round(f / HZ, 3), "ego_to_world": pose(round(x, 4), round(y, 4), round(yaw, 6)), "images": {}})
+        if placement:
+            x, y, z = placement.point(x, y)
+            world = pose(round(x, 4), round(y, 4), round(yaw + placement.yaw, 6), z)
+        else:
+            world = pose(round(x, 4), round(y, 4), round(yaw, 6))
+        frames.append({"index": f, "timestamp_s": round(f / HZ, 3), "ego_to_world": world, "images": {}})
     scene = {"format": "chatsim-scene/1", "name": name, "source": source, "layout_only": True, "frame_rate_hz": HZ,
              "ego_origin": "rear_axle", "cameras": [camera("front", 0), camera("front_left", 45), camera("front_right", -45)],
              "frames": frames}

@@ -14,6 +14,7 @@ Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no
 """
 import math
 
+import layouts_v21
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -402,3 +403,4 @@ if __name__ == "__main__":
     divided()
     tee()
     more_layouts.main()
+    layouts_v21.main()
