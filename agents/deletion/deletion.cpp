@@ -270,7 +270,9 @@ std::string describe(const Selector& s) {
 DeletionRequest parse_deletion(const std::string& instruction) {
   const Words w = text::words(instruction);
   DeletionRequest r;
-  if (auto u = lexicon::unsupported_noun(w)) r.unsupported = *u;
+  // A tram or a horse cannot be added, but a scene may label one (KITTI, nuScenes): what can be
+  // selected is the scene's to say.
+  if (auto u = lexicon::unsupported_noun(w); u && lexicon::find_types({*u}).empty()) r.unsupported = *u;
   size_t except_len = 0;
   const size_t except_at = text::find_any(w, {"except", "but not", "other than", "apart from", "besides", "but the",
                                               "excluding", "save for", "but leave", "but keep"}, &except_len);

@@ -6,6 +6,14 @@
 namespace chatsim::agents::deletion {
 namespace {
 
+// Whether a lane of the same carriageway lies on that side (+1 left, -1 right) of one of width
+// own_width: lane by lane, each abutting the last (a service road past a verge is another road).
+bool lane_next_to(const std::vector<std::pair<double, double>>& beside, double own_width, int side) {
+  for (const auto& [offset, width] : beside)
+    if (side * offset > 0 && side * offset <= (own_width + width) / 2 + 1.0) return true;
+  return false;
+}
+
 constexpr double kPi = std::numbers::pi;
 double wrap(double a) { return std::remainder(a, 2 * kPi); }
 
@@ -94,9 +102,10 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
     return r;
   }
   // Same-direction driving lanes beside the object's, by which side of it they lie.
-  int to_left = 0, to_right = 0, oncoming_side = 0;
+  int oncoming_side = 0;
   const double own_yaw = lanes.travel_yaw_at(own, lanes.project(own, p).s);
   const Eigen::Vector2d own_left(-std::sin(own_yaw), std::cos(own_yaw));
+  std::vector<std::pair<double, double>> beside;  // same-way lanes beside: offset (+ left), width
   for (size_t i = 0; i < lanes.lanes().size(); ++i) {
     if (int(i) == own || lanes.lanes()[i].type != "driving") continue;
     const auto pos = lanes.project(int(i), p);
@@ -106,15 +115,15 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
       oncoming_side = own_left.dot(lanes.point_at(int(i), pos.s) - p) > 0 ? 1 : -1;
     if (std::abs(pos.lateral) > 12 || same_way(int(i), pos.s) > kPi / 4) continue;
     if (pos.s <= 0.5 || pos.s >= lanes.lanes()[i].length() - 0.5) continue;  // beside it, not beyond its end
-    if (pos.lateral > 1.5) ++to_right;  // p lies left of lane i: lane i is to its right
-    else if (pos.lateral < -1.5) ++to_left;
+    if (std::abs(pos.lateral) > 1.5) beside.emplace_back(-pos.lateral, lanes.lanes()[i].width);
   }
-  r.left = to_left == 0;
-  r.right = to_right == 0;
+  const double own_width = lanes.lanes()[size_t(own)].width;
+  r.left = !lane_next_to(beside, own_width, +1);
+  r.right = !lane_next_to(beside, own_width, -1);
   // With no other way's lanes beside (a one-way street), the fast lane is on the left.
   r.inner = oncoming_side < 0 ? r.right : r.left;
   r.outer = oncoming_side < 0 ? r.left : r.right;
-  r.middle = to_left > 0 && to_right > 0;
+  r.middle = !r.left && !r.right;
   return r;
 }
 

@@ -6,6 +6,7 @@
 #include "agents/deletion/lane_relation.hpp"
 #include "agents/language/lane_names.hpp"
 #include "agents/language/lexicon.hpp"
+#include "agents/language/text.hpp"
 
 // Which recorded objects a deletion request's selectors pick in a scene.
 namespace chatsim::agents::deletion {
@@ -85,13 +86,18 @@ void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::ve
         kerbside.push_back(c);
     if (!kerbside.empty()) m = kerbside;
   }
-  // "the bike" with no bicycle about: a motorbike is a bike too.
-  if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) {
-    Selector motorbike = t;
-    motorbike.category = "vehicle.motorcycle";
-    for (const auto& c : cands)
-      if (matches(motorbike, c)) m.push_back(&c);
-  }
+  // "the bike" with no bicycle about: a motorbike is a bike too. "The lorry" with no truck
+  // labelled: an articulated one is labelled by its trailer (nuScenes), a tipper as construction.
+  const auto widen_to = [&](std::initializer_list<const char*> categories) {
+    for (const char* category : categories) {
+      Selector wider = t;
+      wider.category = category;
+      for (const auto& c : cands)
+        if (matches(wider, c)) m.push_back(&c);
+    }
+  };
+  if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) widen_to({"vehicle.motorcycle"});
+  if (m.empty() && t.category == "vehicle.truck") widen_to({"vehicle.trailer", "vehicle.construction"});
 }
 
 // Of the matches, the kind the words say first: passenger cars for "car", tall ones for "SUV",
@@ -116,12 +122,20 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
       if (!plain.empty()) m = plain;
     }
   }
-  // "the white SUV": of the cars that match, the tall ones.
-  if (t.noun == "suv" || t.noun == "suvs" || t.noun == "jeep" || t.noun == "crossover") {
-    std::vector<const Candidate*> tall;
-    for (const auto* c : m)
-      if (c->object->size_lwh.z() >= 1.65) tall.push_back(c);
+  // "the white SUV": of the cars that match, the tall ones. "The van": datasets label vans as
+  // cars, so a car that is van-tall (not the nearest motorbike); a plain car if no car is.
+  const auto types = lexicon::find_types(text::words(t.noun));
+  const bool van = !types.empty() && types.front().type.type == "van";
+  if (t.noun == "suv" || t.noun == "suvs" || t.noun == "jeep" || t.noun == "crossover" || van) {
+    std::vector<const Candidate*> cars, tall;
+    for (const auto* c : m) {
+      const bool car = c->object->has_category_prefix("vehicle.car") || c->object->has_category_prefix("vehicle.emergency");
+      if (!car) continue;
+      cars.push_back(c);
+      if (c->object->size_lwh.z() >= (van ? 1.9 : 1.65)) tall.push_back(c);
+    }
     if (!tall.empty()) m = tall;
+    else if (van && !cars.empty()) m = cars;
   }
   if (t.order == "farthest") std::reverse(m.begin(), m.end());
   // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.

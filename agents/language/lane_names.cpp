@@ -28,6 +28,7 @@ std::vector<std::string> id_words(const std::string& role) {
   if (role == "hov") return {"hov", "carpool"};
   if (role == "roundabout") return {"roundabout", "ring", "circle", "rotary", "circulatory"};
   if (role == "car_park") return {"carpark", "park", "lot", "garage"};
+  if (role == "lay_by") return {"layby", "lay", "passing", "turnout", "pullout", "refuge"};
   return {role};
 }
 
@@ -66,6 +67,11 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
   for (const char* place : {"car park", "carpark", "parking lot", "parking garage", "car lot", "parking structure"})
     if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
       return LaneName{"car_park", at, at + text::words(place).size()};
+  // "in the passing place", "pull into the lay-by": a place beside the road to stop at.
+  for (const char* place : {"passing place", "passing places", "passing bay", "passing bays", "lay-by", "lay-bys",
+                            "layby", "laybys", "lay by", "turnout", "turnouts", "pullout", "pullouts"})
+    if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
+      return LaneName{"lay_by", at, at + text::words(place).size()};
   for (size_t i = 1; i < w.size(); ++i) {
     // "the service road", "the farm track": a name the map's lane ids may use.
     if ((w[i] == "road" || w[i] == "track" || w[i] == "lane") && !says_where(w[i - 1]) &&
@@ -114,6 +120,14 @@ std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use
   for (const auto& word : id_words(turn ? "turn" : use))
     for (int lane : map.named(word))
       if (std::find(out.begin(), out.end(), lane) == out.end()) out.push_back(lane);
+  // A lay-by is a place to stop: of the lanes so named, those (a "passing_lane" is for driving);
+  // with none named, any parking lane or shoulder.
+  if (use == "lay_by") {
+    std::erase_if(out, [&](int l) { return !map.lanes()[size_t(l)].for_stopping(); });
+    if (out.empty())
+      for (size_t i = 0; i < map.lanes().size(); ++i)
+        if (map.lanes()[i].for_stopping()) out.push_back(int(i));
+  }
   // A roundabout the ids do not name: a lane whose centreline closes on itself.
   if (out.empty() && use == "roundabout")
     for (size_t i = 0; i < map.lanes().size(); ++i)

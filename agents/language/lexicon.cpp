@@ -68,6 +68,9 @@ const std::map<std::string, VehicleType>& types() {
       // nuScenes' construction vehicles and trailers: no asset of their own (a truck stands in).
       {"construction", {"construction", "vehicle.construction", "vehicle.construction"}},
       {"trailer", {"trailer", "vehicle.trailer", "vehicle.trailer"}},
+      // Labelled in some datasets (KITTI's Tram, nuScenes' animal): selectable, never added.
+      {"tram", {"tram", "vehicle.tram", "vehicle.tram"}},
+      {"animal", {"animal", "animal", "animal"}},
       {"cone", {"cone", "movable_object.trafficcone", "movable_object.trafficcone"}},
       {"barrier", {"barrier", "movable_object.barrier", "movable_object.barrier"}},
       {"pedestrian", {"pedestrian", "human.pedestrian.adult", "human"}},
@@ -144,10 +147,12 @@ const std::vector<Noun>& nouns() {
       for (const auto& e : doc.at("nouns")) {
         Noun noun{e.at("phrase").get<std::string>(), e.at("type").get<std::string>(), e.value("plural", false), {}};
         noun.words = text::words(noun.phrase);
-        if (types().count(noun.type) == 0)
+        if (types().count(noun.type) == 0) {
+          std::string known;
+          for (const auto& [name, type] : types()) known += (known.empty() ? "" : ", ") + name;
           throw std::runtime_error(file.string() + ": the noun '" + noun.phrase + "' has the unknown type '" + noun.type +
-                                   "' (nouns[].type: car, suv, truck, bus, van, police, taxi, ambulance, firetruck, "
-                                   "motorcycle, bicycle, cone, barrier, pedestrian or object)");
+                                   "' (nouns[].type: one of " + known + ")");
+        }
         list.push_back(std::move(noun));
       }
     } catch (const nlohmann::json::exception& e) {
@@ -275,6 +280,11 @@ const std::unordered_set<std::string>& english_words() {
 }
 
 }  // namespace
+
+void load_vocabulary() {
+  (void)known_words();  // makes, nouns and words.json
+  (void)english_words();
+}
 
 bool is_domain_word(const std::string& w) {
   const auto& known = known_words();
@@ -446,7 +456,9 @@ std::string make_display_name(const std::string& brand) {
 
 std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {
   static const char* kNouns[] = {"helicopter", "helicopters", "plane", "planes", "airplane", "aeroplane", "boat",
-                                 "boats", "ship", "train", "trains", "tram", "tank", "tanks", "horse", "horses",
+                                 "boats", "ship", "train", "trains", "tram", "trams", "streetcar", "streetcars",
+                                 "trolley", "trolleys", "tank", "tanks", "horse", "horses", "sheep", "deer", "animal",
+                                 "animals",
                                  "dog", "dogs", "cat", "cats", "cow", "cows", "dinosaur", "spaceship", "ufo",
                                  "rocket", "submarine", "saucer", "saucers", "hovercraft", "blimp", "zeppelin",
                                  "elephant", "giraffe", "unicorn", "dragon", "tree", "trees",
@@ -457,7 +469,7 @@ std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {
   for (size_t i = 0; i < w.size(); ++i)
     for (const char* n : kNouns)
       if (w[i] == n && std::none_of(vehicles.begin(), vehicles.end(), [&](const TypeMention& t) {
-            return t.begin > i && t.begin <= i + 2 && t.type.type != "object" && t.type.type != "pedestrian";
+            return t.begin > i && t.begin <= i + 2 && t.type.type != "object" && !t.type.living();
           }))
         return w[i];
   return std::nullopt;

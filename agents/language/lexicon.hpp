@@ -25,6 +25,7 @@ struct VehicleType {
   std::string type;          // car, suv, truck, bus, van, police, taxi, ambulance, firetruck, motorcycle, cone, barrier
   std::string category;      // the scene category an added one gets, e.g. vehicle.emergency.police
   std::string scene_prefix;  // what it selects among labelled objects, e.g. vehicle.truck
+  bool living() const { return type == "pedestrian" || type == "animal"; }  // walks: never a vehicle to add
 };
 
 struct TypeMention {
@@ -58,6 +59,9 @@ bool is_color_word(const std::string& w);
 // nor one with two equally near domain words; without a word list nothing is changed.
 void correct_typos(std::vector<std::string>& words);
 
+// Loads the vocabulary and word lists now (an agent starting), so that its first command does not
+// wait for them (about 30 ms). Throws std::runtime_error when a vocabulary file is missing or broken.
+void load_vocabulary();
 // Whether the interpreter knows the word (words.json, the vehicle vocabulary, colours, nouns),
 // and whether it is English at all (the word lists; false without them).
 bool is_domain_word(const std::string& w);

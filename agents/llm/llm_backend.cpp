@@ -10,6 +10,7 @@
 
 #include "agents/asset/asset_choice.hpp"
 #include "agents/deletion/deletion.hpp"
+#include "agents/language/lexicon.hpp"
 #include "agents/manager/decompose.hpp"
 #include "agents/llm/openai_backend.hpp"
 #include "agents/motion/motion_intent.hpp"
@@ -34,6 +35,13 @@ std::string read_text(const std::filesystem::path& file) {
 // The deterministic English interpreter, one function per agent.
 class OfflineBackend : public Backend {
  public:
+  OfflineBackend() {
+    // Loaded at the start, not on the first command; a broken file is reported by that command.
+    try {
+      lexicon::load_vocabulary();
+    } catch (const std::runtime_error&) {
+    }
+  }
   std::string name() const override { return "offline"; }
   nlohmann::json complete(const Prompt& prompt, const std::string& instruction) override {
     nlohmann::json out;

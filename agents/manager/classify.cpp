@@ -26,7 +26,7 @@ const std::vector<std::string>& delete_verbs() {
 
 bool mentions_vehicle(const Words& w) {
   for (const auto& t : lexicon::find_types(w))
-    if (t.type.type != "object" && t.type.type != "pedestrian") return true;
+    if (t.type.type != "object" && !t.type.living()) return true;
   return !lexicon::find_brands(w).empty();
 }
 
@@ -46,6 +46,15 @@ bool refers_to_added(const Words& w_in) {
 // road. False when the clause is none of these.
 bool classify_whole(const Words& c, Instruction& in) {
   const std::string first = c.front();
+  // "undo that", "scratch that": the whole last round, whatever it did ("undo the deletion" is a
+  // restore, below).
+  const bool of_deletion = has_any(c, {"deletion", "deletions", "removal", "delete", "deleted", "removed", "remove"});
+  if (!of_deletion && (first == "undo" || first == "revert" ||
+                       has_any(c, {"scratch that", "cancel that", "take that back", "forget that", "go back a step",
+                                   "go back one step", "revert that", "revert the last"}))) {
+    in.kind = "undo";
+    return true;
+  }
   if (has_any(c, {"put back", "bring back", "restore", "undo the deletion", "undo the removal", "undelete",
                   "add back", "re-add", "readd", "put it back", "put them back", "undo", "add it back",
                   "add them back", "bring it back", "bring them back", "keep it", "keep that", "keep them",
@@ -173,7 +182,7 @@ Words causative_addition(const Words& c) {
   if (c[1] != "a" && c[1] != "an" && !(text::is_number_word(c[1]) && c[1] != "half")) return c;
   const auto types = lexicon::find_types(Words(c.begin() + 1, c.end()));
   const auto brands = lexicon::find_brands(Words(c.begin() + 1, c.end()));
-  const bool vehicle = (!types.empty() && types.front().begin <= 4 && types.front().type.type != "pedestrian") ||
+  const bool vehicle = (!types.empty() && types.front().begin <= 4 && !types.front().type.living()) ||
                        (!brands.empty() && brands.front().begin <= 4);
   if (!vehicle) return c;
   Words out{"add"};
@@ -200,7 +209,7 @@ Words fill_addition(const Words& c) {
   if (link == std::string::npos || link < 2) return c;
   const size_t noun_from = link + (c[link] == "with" ? 1 : 2);
   const auto types = lexicon::find_types(Words(c.begin() + long(noun_from), c.end()));
-  if (types.empty() || !types.front().plural || types.front().type.type == "pedestrian") return c;
+  if (types.empty() || !types.front().plural || types.front().type.living()) return c;
   Words out{"add", "a", "row", "of", "parked"};
   out.insert(out.end(), c.begin() + long(noun_from + types.front().begin), c.begin() + long(noun_from + types.front().end));
   out.push_back("in");
@@ -215,7 +224,7 @@ bool indefinite_vehicle_subject(const Words& c) {
   if (c[1] == "of" || c[1] == "bit" || c[1] == "little") return false;  // "one of the cars", "a bit further"
   const auto types = lexicon::find_types(c);
   const auto brands = lexicon::find_brands(c);
-  const bool vehicle_type = !types.empty() && types.front().type.type != "pedestrian";
+  const bool vehicle_type = !types.empty() && !types.front().type.living();
   const size_t noun = std::min(vehicle_type ? types.front().begin : c.size(), brands.empty() ? c.size() : brands.front().begin);
   return noun >= 1 && noun <= 4 && noun < c.size();  // "2 m forward": the number itself is no model name
 }
@@ -282,6 +291,23 @@ bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction
   return false;
 }
 
+// Words around a correction that say nothing of their own ("no, red instead please").
+bool is_filler_word(const std::string& x) {
+  static const std::vector<std::string> kFiller{"no", "nope", "actually", "rather", "instead", "please", "sorry",
+                                                "i", "meant", "mean", "make", "it", "in", "oh", "wait", "hmm", "better",
+                                                "let's", "lets", "go", "with", "try", "then", "and", "a", "the"};
+  return std::find(kFiller.begin(), kFiller.end(), x) != kFiller.end();
+}
+
+// A clause of a colour and filler words only ("no, dark green", "red instead").
+bool bare_color(const Words& c) {
+  if (lexicon::find_colors(c).empty()) return false;
+  return std::all_of(c.begin(), c.end(), [](const std::string& x) {
+    return is_filler_word(x) || lexicon::is_color_word(x) || x == "dark" || x == "light" || x == "bright" ||
+           x == "pale" || x == "deep";
+  });
+}
+
 // An addition: by its verb, a new subject ("a pickup should come out..."), a copy ("another
 // one"), or a dangerous cut-in. A named thing that cannot be added is unclear, with the thing.
 bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
@@ -310,7 +336,8 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
                              one_at - c.begin() <= long(article) + 3 &&
                              std::all_of(c.begin() + long(article) + 1, one_at, [](const std::string& x) {
                                return lexicon::is_color_word(x) || x == "dark" || x == "light" || x == "bright" ||
-                                      x == "new" || x == "similar" || x == "bigger" || x == "smaller";
+                                      x == "new" || x == "similar" || x == "bigger" || x == "smaller" ||
+                                      x == "second" || x == "third" || x == "fourth" || x == "further";
                              });
   if ((first == "another" || (c.size() > 1 && first == "one" && c[1] == "more") || described_one) &&
       !names_its_own_kind(c)) {
@@ -325,7 +352,7 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
   // "add a flying saucer above the bus": what is to be added is no vehicle, whatever follows.
   const auto bad = lexicon::unsupported_noun(c);
   const auto types = lexicon::find_types(c);
-  if (bad && (types.empty() || text::find_phrase(c, *bad) < types.front().begin)) {
+  if (bad && (types.empty() || text::find_phrase(c, *bad) <= types.front().begin)) {
     in.kind = "unclear";
     in.target = *bad;
     return true;
@@ -389,6 +416,16 @@ Instruction classify(const Words& c_in) {
   }
   if (vehicle && !has_any(c, {"what", "why", "how", "who"})) {
     in.kind = "add";
+    return in;
+  }
+  // "no, dark green", "actually red please": a colour said alone recolours what was spoken of last.
+  if (bare_color(c)) {
+    in.kind = "revise";
+    in.target = "it";
+    Words colour;
+    for (const auto& x : c)
+      if (!is_filler_word(x)) colour.push_back(x);
+    in.text = "make it " + text::join(colour);
     return in;
   }
   // "2 m forward", "another 10 degrees left": an amount and a direction with nothing else named

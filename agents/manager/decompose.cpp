@@ -24,7 +24,7 @@ using detail::mentions_vehicle;
 bool bare_plural_addition(const Words& w, size_t i, const Words& clause_so_far) {
   if (clause_so_far.empty()) return false;
   const auto types = lexicon::find_types(Words(w.begin() + long(i), w.begin() + long(std::min(w.size(), i + 3))));
-  if (types.empty() || types.front().begin != 0 || !types.front().plural || types.front().type.type == "pedestrian")
+  if (types.empty() || types.front().begin != 0 || !types.front().plural || types.front().type.living())
     return false;
   return classify(clause_so_far).kind == "add";
 }
@@ -146,7 +146,7 @@ std::vector<Words> split_additions(const Words& c) {
       Words rest(c.begin() + long(i) + 1, c.end());
       const auto types = lexicon::find_types(rest);
       if (!types.empty() && types.front().begin <= 2 && mentions_vehicle(Words(c.begin(), c.begin() + long(i))) &&
-          types.front().type.type != "pedestrian" && types.front().type.type != "object") {
+          !types.front().type.living() && types.front().type.type != "object") {
         out.emplace_back(Words{"add"});
         continue;
       }

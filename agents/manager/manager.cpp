@@ -112,9 +112,12 @@ ChatResult Manager::run_round(Conversation& c, const std::string& scene_dir, con
                                            " characters long; only the first 2000 were read"}});
   // The paper's order: view first, then deletions, then vehicles in the order said.
   std::stable_sort(instructions.begin(), instructions.end(), [](const Instruction& a, const Instruction& b) {
-    auto phase = [](const std::string& k) { return k == "view" ? 0 : (k == "delete" || k == "restore") ? 1 : 2; };
+    auto phase = [](const std::string& k) {
+      return k == "undo" ? -1 : k == "view" ? 0 : (k == "delete" || k == "restore") ? 1 : 2;
+    };
     return phase(a.kind) < phase(b.kind);
   });
+  remember_for_undo(c);
   for (const auto& in : instructions) {
     round.instructions.push_back(in.kind + ": " + in.text);
     run_instruction(c, in, round);
@@ -136,6 +139,7 @@ void Manager::run_instruction(Conversation& c, const Instruction& in, Round& rou
   if (in.kind == "view") do_view(c, in, round);
   else if (in.kind == "delete") do_delete(c, in, round);
   else if (in.kind == "restore") do_restore(c, in, round);
+  else if (in.kind == "undo") do_undo(c, in, round);
   else if (in.kind == "add") do_add(c, in, round);
   else if (in.kind == "revise") do_revise(c, in, round);
   else if (in.kind == "remove_added") do_remove_added(c, in, round);
@@ -296,9 +300,12 @@ bool Manager::add_one(Conversation& c, const json& asset_args, const json& motio
   if (motion_said.contains("relative")) {
     const auto anchor = find_anchor(c, motion_said["relative"].value("to", "it"), -1);
     if (!anchor) {
-      c.unresolved.push_back({{"instruction", text}, {"reason", "no vehicle, added or recorded, matches '" +
-                                                                   motion_said["relative"].value("to", "") +
-                                                                   "' to place it relative to"}});
+      const std::string to = motion_said["relative"].value("to", "");
+      c.unresolved.push_back({{"instruction", text},
+                              {"reason", to == "removed" ? "'there' or 'in its place' names no place: nothing has been "
+                                                           "removed in this conversation"
+                                                         : "no vehicle, added or recorded, matches '" + to +
+                                                               "' to place it relative to"}});
       return false;
     }
     args["anchor"] = *anchor;

@@ -47,6 +47,8 @@ struct Conversation {
   std::vector<int> last_group; // the vehicles "them"/"both" mean
   // Recorded vehicles something was placed relative to, by id: later rounds find the same one.
   std::map<std::string, nlohmann::json> recorded_anchors;
+  // The state before each of the last rounds, newest last: what "undo that" goes back to.
+  std::vector<std::shared_ptr<const Conversation>> undo;
 };
 
 struct ChatResult {
@@ -59,6 +61,8 @@ class Manager {
   static constexpr int kMaxAddedPerInstruction = 40;
   // Conversations kept; the least recently used beyond this are forgotten (bounded memory).
   static constexpr size_t kMaxConversations = 64;
+  // Rounds "undo" can go back, one at a time.
+  static constexpr size_t kUndoDepth = 16;
 
   Manager(AgentCaller caller, std::shared_ptr<llm::Backend> backend);
 
@@ -79,6 +83,8 @@ class Manager {
   void do_delete(Conversation& c, const Instruction& in, Round& round);
   bool restore_described(Conversation& c, const std::vector<std::string>& words, Round& round);
   void do_restore(Conversation& c, const Instruction& in, Round& round);
+  void do_undo(Conversation& c, const Instruction& in, Round& round);
+  void remember_for_undo(Conversation& c);
   void do_add(Conversation& c, const Instruction& in, Round& round);
   void do_revise(Conversation& c, const Instruction& in, Round& round);
   bool replan_revised(Conversation& c, int index, const nlohmann::json& said, const std::string& text);

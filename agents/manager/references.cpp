@@ -75,7 +75,10 @@ std::vector<int> Manager::resolve(const Conversation& c, const std::string& refe
     // "it", "the added car", "the new one": the one spoken about last.
     return {c.last_ref >= 0 && c.last_ref < n ? c.last_ref : n - 1};
   }
-  // The most recent added vehicle that has every named brand, type and colour.
+  // The most recent added vehicle that has every named brand, type and colour; every one of them
+  // for a plural ("the cones", "all the police cars").
+  const bool plural = (!types.empty() && types.front().plural) || (!brands.empty() && brands.front().plural) ||
+                      text::has_any(w, {"all", "every", "each"});
   for (int i = n - 1; i >= 0; --i) {
     const auto& a = c.added[size_t(i)].asset;
     const auto bw = a.value("brand_words", std::vector<std::string>{});
@@ -84,7 +87,8 @@ std::vector<int> Manager::resolve(const Conversation& c, const std::string& refe
     if (!colors.empty() &&
         lexicon::color_class(a.value("color_rgb", std::array<int, 3>{0, 0, 0})) != lexicon::color_class(colors.front().rgb))
       continue;
-    return {i};
+    if (!plural) return {i};
+    out.insert(out.begin(), i);
   }
   return out;
 }

@@ -41,6 +41,7 @@ void MotionIntent::merge(const MotionIntent& o) {
     speed.reset();
   }
   if (o.direction) direction = o.direction;
+  if (o.slope) slope = o.slope;
   if (o.wrong_way) wrong_way = o.wrong_way;
   if (o.chase) chase = o.chase;
   // "have it chase the red car": a chase is a drive, whatever stood before.
@@ -68,6 +69,7 @@ nlohmann::json to_json(const MotionIntent& m) {
   util::put_optional(j, "speed", m.speed);
   util::put_optional(j, "speed_mps", m.speed_mps);
   util::put_optional(j, "direction", m.direction);
+  util::put_optional(j, "slope", m.slope);
   util::put_optional(j, "wrong_way", m.wrong_way);
   util::put_optional(j, "chase", m.chase);
   util::put_optional(j, "overtake", m.overtake);
@@ -92,6 +94,7 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   util::get_optional(j, "speed", m.speed);
   util::get_optional(j, "speed_mps", m.speed_mps);
   util::get_optional(j, "direction", m.direction);
+  util::get_optional(j, "slope", m.slope);
   util::get_optional(j, "wrong_way", m.wrong_way);
   util::get_optional(j, "chase", m.chase);
   util::get_optional(j, "overtake", m.overtake);

@@ -32,6 +32,7 @@ struct MotionIntent {
   std::optional<std::string> speed;       // slow, normal, fast, faster, slower
   std::optional<double> speed_mps;
   std::optional<std::string> direction;   // toward, away
+  std::optional<std::string> slope;       // up, down: "coming down the hill" (which way that is, the map says)
   std::optional<bool> wrong_way;
   std::optional<bool> chase;              // "chasing", "following": match the target's speed
   std::optional<bool> overtake;           // "overtaking me": the ego's way, fast, passing it

@@ -93,6 +93,14 @@ std::optional<RelativePlacement> find_place_of(Words& w) {
     for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
     return RelativePlacement{"removed", "at"};
   }
+  // "remove the police car and put an ambulance there": a bare "there" ending the clause.
+  for (const char* tail : {"there", "there too", "there as well", "there now"}) {
+    const Words t = text::words(tail);
+    if (w.size() > t.size() + 1 && std::equal(t.begin(), t.end(), w.end() - long(t.size()))) {
+      std::fill(w.end() - long(t.size()), w.end(), "_");
+      return RelativePlacement{"removed", "at"};
+    }
+  }
   for (const char* p : {"where the", "in place of the", "instead of the"}) {
     const size_t at = find_phrase(w, p);
     if (at == std::string::npos) continue;
@@ -304,6 +312,10 @@ void find_direction(const Words& w, MotionIntent& m) {
   // On the other side of the road, unless told otherwise, it comes toward the ego.
   else if (m.lane == "oncoming" && has_any(w, {"coming", "comes", "driving", "drives", "heading"}))
     m.direction = "toward";
+  if (has_any(w, {"downhill", "down the hill", "down the slope", "down the incline", "descending"}))
+    m.slope = "down";
+  else if (has_any(w, {"uphill", "up the hill", "up the slope", "up the incline", "climbing"}))
+    m.slope = "up";
   if (has_any(w, {"wrong way", "wrong direction", "against traffic", "against the traffic", "against the flow",
                   "ghost driver", "wrong side", "contraflow", "against the direction"}))
     m.wrong_way = true;

@@ -138,6 +138,44 @@ std::optional<TurnPlan> roundabout_exit_path(const scene::LaneMap& map, int lane
   return roundabout_path(map, lane, s0, dir, 0, length, nth);
 }
 
+namespace {
+
+// The turn at crossing c with the given radius: along the lane to a radius short of the crossing,
+// a curve onto the other lane a radius past it, then along that lane.
+std::optional<TurnPlan> turn_at(const scene::LaneMap& map, int lane, double s0, int dir, const scene::LaneCrossing& c,
+                                double ahead, double radius, bool street_ends_here, double length) {
+  const auto& other = map.lanes()[size_t(c.other)];
+  // Legal travel on the other lane runs along its polyline unless it is a backward lane.
+  const int other_dir = other.direction == scene::TrafficDirection::Backward ? -1 : 1;
+  const double exit_s = c.s_other + other_dir * radius;
+  if (exit_s < 0 || exit_s > other.length()) return std::nullopt;
+  TurnPlan plan;
+  // Out of a street's mouth: the turn starts a radius short of the lane it joins, not of the
+  // street's end, so that it stays on the lanes (a quarter circle, not a bulge across the kerb).
+  const double gap = street_ends_here ? std::abs(map.project(c.other, map.point_at(lane, c.s_self)).lateral) : 0.0;
+  plan.path = lane_path(map, lane, s0, dir, std::clamp(ahead + gap - radius, 0.0, ahead));
+  const size_t before = plan.path.points.size();
+  append_hermite(plan.path, map.point_at(c.other, exit_s), map.travel_yaw_at(c.other, c.s_other));
+  plan.connector.assign(plan.path.points.begin() + long(before), plan.path.points.end());
+  const Path rest = lane_path(map, c.other, exit_s, other_dir, std::max(0.0, length - plan.path.length()));
+  for (const auto& p : rest.points) plan.path.push(p);
+  plan.target_lane = other.id;
+  return plan;
+}
+
+// Whether a turn's curve lies on some lane (half its width and a little more) where it cuts the
+// corner most: its middle half, sampled at a quarter, the middle and three quarters (each start
+// tried plans a turn, so this is on the planner's hot path).
+bool connector_on_lanes(const scene::LaneMap& map, const std::vector<Eigen::Vector2d>& connector) {
+  if (connector.empty()) return true;
+  int hint = -1;
+  for (const double f : {0.25, 0.5, 0.75})
+    if (!map.on_some_lane(connector[size_t(f * double(connector.size() - 1))], 0.3, hint)) return false;
+  return true;
+}
+
+}  // namespace
+
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length) {
   if (auto round = roundabout_path(map, lane, s0, dir, sign, length)) return round;
   const double travel_yaw = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
@@ -151,30 +189,24 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
     // A smooth turn, or a tight one from near the end of a side street (its mouth: the lane it
     // turns into lies beyond the street's end).
     const bool street_ends_here = std::abs(c.s_self - (dir > 0 ? map.lanes()[size_t(lane)].length() : 0.0)) < 0.5;
-    double radius = 9.0;
-    if (ahead < radius + 1 && street_ends_here) radius = 5.0;
-    if (ahead < radius + 1 && !(street_ends_here && ahead >= 1.0)) continue;
     const auto& other = map.lanes()[size_t(c.other)];
     if (other.type != "driving") continue;
     const double other_yaw = map.travel_yaw_at(c.other, c.s_other);
     const double want = wrap(travel_yaw + sign * kPi / 2);
     if (std::abs(wrap(other_yaw - want)) > kPi / 6) continue;
-    // Legal travel on the other lane runs along its polyline unless it is a backward lane.
-    const int other_dir = other.direction == scene::TrafficDirection::Backward ? -1 : 1;
-    const double exit_s = c.s_other + other_dir * radius;
-    if (exit_s < 0 || exit_s > other.length()) continue;
-    TurnPlan plan;
-    // Out of a street's mouth: the turn starts a radius short of the lane it joins, not of the
-    // street's end, so that it stays on the lanes (a quarter circle, not a bulge across the kerb).
-    const double gap = street_ends_here ? std::abs(map.project(c.other, map.point_at(lane, c.s_self)).lateral) : 0.0;
-    plan.path = lane_path(map, lane, s0, dir, std::clamp(ahead + gap - radius, 0.0, ahead));
-    const size_t before = plan.path.points.size();
-    append_hermite(plan.path, map.point_at(c.other, exit_s), other_yaw);
-    plan.connector.assign(plan.path.points.begin() + long(before), plan.path.points.end());
-    const Path rest = lane_path(map, c.other, exit_s, other_dir, std::max(0.0, length - plan.path.length()));
-    for (const auto& p : rest.points) plan.path.push(p);
-    plan.target_lane = other.id;
-    return plan;
+    // The smooth radius first; where its corner would cut across ground no lane covers (a side
+    // street drawn from the kerb, no parking lane at the corner), a tighter one.
+    std::optional<TurnPlan> loose;
+    for (const double r : {9.0, 7.0, 5.5}) {
+      double radius = r;
+      if (ahead < radius + 1 && street_ends_here) radius = 5.0;
+      if (ahead < radius + 1 && !(street_ends_here && ahead >= 1.0)) continue;
+      auto plan = turn_at(map, lane, s0, dir, c, ahead, radius, street_ends_here, length);
+      if (!plan) continue;
+      if (connector_on_lanes(map, plan->connector)) return plan;
+      if (!loose) loose = std::move(plan);
+    }
+    if (loose) return loose;
   }
   return std::nullopt;
 }
@@ -222,8 +254,14 @@ std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std
   // Speed limit per metre of path from curvature, then acceleration limits both ways.
   const double ds = 0.5;
   const size_t n = size_t(std::ceil(path.length() / ds)) + 2;
-  std::vector<double> v(n);
-  for (size_t i = 0; i < n; ++i) {
+  std::vector<double> v(n, v_desired);
+  // A straight path (most lane paths) has no bend to slow for: skip sampling its curvature.
+  bool straight = true;
+  for (size_t i = 2; i < path.points.size() && straight; ++i) {
+    const Eigen::Vector2d a = path.points[i - 1] - path.points[i - 2], b = path.points[i] - path.points[i - 1];
+    straight = std::abs(a.x() * b.y() - a.y() * b.x()) <= 1e-4 * a.norm() * b.norm() && a.dot(b) > 0;
+  }
+  for (size_t i = 0; i < n && !straight; ++i) {
     const double k = path.curvature_at(double(i) * ds);
     v[i] = std::min(v_desired, k > 1e-6 ? std::sqrt(a_lat / k) : v_desired);
   }

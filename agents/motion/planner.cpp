@@ -70,6 +70,25 @@ std::string nearest_parking_side(const scene::Scene& scene) {
   return pe.y() > 0 ? "left_front" : "right_front";
 }
 
+// How much the road the ego drives on climbs over the next 20 m of its way (metres; negative:
+// it descends), from the heights of the lane map's centreline.
+double ego_climb(const scene::Scene& scene) {
+  const EgoFrame ego = ego_frame(scene);
+  const auto at = scene.lanes.nearest(ego.p, "driving");
+  if (!at) return 0;
+  const auto& lane = scene.lanes.lanes()[size_t(at->lane)];
+  const auto height = [&](double s) {
+    s = std::clamp(s, 0.0, lane.length());
+    const size_t i = std::min<size_t>(size_t(std::upper_bound(lane.s.begin(), lane.s.end(), s) - lane.s.begin()),
+                                      lane.s.size() - 1);
+    if (i == 0) return lane.centerline.front().z();
+    const double t = (s - lane.s[i - 1]) / std::max(1e-9, lane.s[i] - lane.s[i - 1]);
+    return lane.centerline[i - 1].z() + t * (lane.centerline[i].z() - lane.centerline[i - 1].z());
+  };
+  const double forward = std::cos(wrap(at->tangent_yaw - ego.yaw)) >= 0 ? 1 : -1;
+  return height(at->s + forward * 20) - height(at->s);
+}
+
 Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(scene), req_(req), m_(req.intent) {
   ego_ = ego_frame(scene);
   for (const auto& f : scene.frames) times_.push_back(f.timestamp_s - scene.frames.front().timestamp_s);
@@ -94,6 +113,11 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
   // Overtaking from beside or ahead moves away from the ego's start; from behind it moves
   // toward it, which the lanes' own direction already gives.
   if (m_.overtake.value_or(false) && !m_.direction && m_.placement != "back") m_.direction = "away";
+  // "coming down the hill": toward the ego where its road climbs, away where it descends.
+  if (m_.slope && !m_.direction) {
+    const double climb = ego_climb(scene);
+    if (std::abs(climb) > 0.3) m_.direction = (climb > 0) == (m_.slope == "down") ? "toward" : "away";
+  }
   // A side street on the left or right lies ahead of the ego on that side.
   if (m_.lane == "cross" && m_.placement == "left") m_.placement = "left_front";
   if (m_.lane == "cross" && m_.placement == "right") m_.placement = "right_front";

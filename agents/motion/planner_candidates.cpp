@@ -27,7 +27,7 @@ Region region_for(const std::string& placement, const MotionIntent& m, double wi
   if (side && (m.action == "static" || m.speed == "static" || m.lane == "parking") && !m.distance_m) {
     r.a_min = placement == "left" ? 20 : -160;
     r.a_max = placement == "left" ? 160 : -20;
-    r.d_max = 30;
+    r.d_max = 40;
   }
   if (m.distance_word == "close") d_default = side ? 3.5 : 9;
   if (m.distance_word == "far") d_default = side ? 8 : 40;
@@ -50,6 +50,30 @@ Region region_for(const std::string& placement, const MotionIntent& m, double wi
     r.d_max = *m.distance_m + tol;
   }
   return r;
+}
+
+std::vector<std::pair<double, double>> camera_bearings(const scene::Scene& scene) {
+  std::vector<std::pair<double, double>> out;
+  for (const auto& cam : scene.cameras) {
+    if (cam.fx <= 0 || cam.width <= 0) continue;
+    const Eigen::Vector3d axis = cam.sensor_to_ego.linear().col(2);  // OpenCV: +z looks out
+    const double yaw = std::atan2(axis.y(), axis.x()) / kDeg;
+    const double half = std::atan(cam.width / (2.0 * cam.fx)) / kDeg;
+    out.emplace_back(yaw - half, yaw + half);
+  }
+  return out;
+}
+
+double degrees_out_of_sight(const std::vector<std::pair<double, double>>& bearings, const Eigen::Vector2d& pe) {
+  if (bearings.empty()) return 0;
+  const double a = std::atan2(pe.y(), pe.x()) / kDeg;
+  double best = 360;
+  for (const auto& [lo, hi] : bearings)
+    for (const double turn : {-360.0, 0.0, 360.0}) {  // ranges may straddle +-180
+      const double b = a + turn;
+      best = std::min(best, b < lo ? lo - b : b > hi ? b - hi : 0.0);
+    }
+  return best;
 }
 
 bool in_region(const Region& r, const Eigen::Vector2d& pe) {
@@ -212,6 +236,16 @@ Region Planner::search_region(const std::string& placement, double widen) const 
   return region;
 }
 
+bool Planner::stopping_lane_in(const Region& region) const {
+  const auto& lanes = scene_.lanes.lanes();
+  for (size_t li = 0; li < lanes.size(); ++li) {
+    if (!lanes[li].for_stopping()) continue;
+    for (double s = 0.5; s < lanes[li].length(); s += 1.0)
+      if (in_region(region, ego_.to_ego(scene_.lanes.point_at(int(li), s)))) return true;
+  }
+  return false;
+}
+
 std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const {
   std::vector<Candidate> out;
   const auto edge_penalty = lane_edge_penalties();
@@ -226,13 +260,19 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
   // "parked in the car park": in its bays, not in its aisle.
   const bool use_has_stopping =
       std::any_of(use_lanes_.begin(), use_lanes_.end(), [&](int l) { return lanes[size_t(l)].for_stopping(); });
+  // Parked "on the left": at a parking lane on that side where the map has one in reach, not in
+  // a lane of traffic; and where a camera sees it, not straight beside the ego.
+  const bool side = placement == "left" || placement == "right";
+  const bool kerb_in_reach = side && wants_parked(false) && stopping_lane_in(region);
+  const auto bearings = side && wants_parked(false) && m_.distance_word != "close" ? camera_bearings(scene_)
+                                                                                  : decltype(camera_bearings(scene_)){};
   for (size_t li = 0; li < lanes.size(); ++li) {
     const auto& lane = lanes[li];
     if (lane.type != "driving" && !lane.for_stopping()) continue;
     const bool parking = lane.for_stopping();
     const bool parked = wants_parked(parking);
     if (parking && !parked && !m_.lane && !moving_on_parking) continue;  // moving traffic stays off parking lanes
-    if (movable_ && parked && !parking && use_has_stopping) continue;
+    if (movable_ && parked && !parking && (use_has_stopping || kerb_in_reach)) continue;
     std::vector<int> dirs;
     if (lane.direction == scene::TrafficDirection::Both) dirs = {1, -1};
     else dirs = {m_.wrong_way.value_or(false) ? -legal_dir(lane) : legal_dir(lane)};
@@ -247,7 +287,7 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         c.score += lane_without_distance ? std::min(off, 30.0) + 0.1 * off : off;
         c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
         if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(pe.y());
-        if (placement == "left" || placement == "right") c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x());
+        if (side) c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x()) + 1.5 * degrees_out_of_sight(bearings, pe);
         if (parked && movable_ && !parking && (m_.action == "static")) c.score += 8;  // parked cars belong at the kerb
         if (!movable_ && parking) c.score += 3;
         // Coming down a side street: some way up it, so that it is seen coming, not born at the mouth.

@@ -44,6 +44,10 @@ struct Region {
 };
 Region region_for(const std::string& placement, const MotionIntent& m, double widen = 1.0);
 bool in_region(const Region& r, const Eigen::Vector2d& pe);
+// Each camera's horizontal field of view as bearings in the ego frame (degrees, left positive),
+// and how many degrees a point in the ego frame lies outside all of them (0: some camera sees it).
+std::vector<std::pair<double, double>> camera_bearings(const scene::Scene& scene);
+double degrees_out_of_sight(const std::vector<std::pair<double, double>>& bearings, const Eigen::Vector2d& pe);
 
 struct Candidate {
   int lane = -1;
@@ -99,6 +103,7 @@ class Planner {
   std::optional<double> direction_score(int lane, double s, int dir, bool parked) const;
   std::vector<Candidate> region_candidates() const;
   std::vector<Candidate> region_candidates(bool moving_on_parking) const;
+  bool stopping_lane_in(const Region& region) const;  // some parking lane or shoulder lies in it
   Region search_region(const std::string& placement, double widen) const;
   void place_by_junction(const std::string& placement, double widen, Region& region) const;
   std::vector<Candidate> relative_candidates() const;

@@ -160,23 +160,32 @@ double LaneMap::travel_yaw_at(int index, double s) const {
 std::vector<LaneCrossing> LaneMap::crossings(int index) const {
   std::vector<LaneCrossing> out;
   const Lane& self = lanes_.at(size_t(index));
+  const auto& self_chunks = chunk_bounds_[size_t(index)];
   for (size_t o = 0; o < lanes_.size(); ++o) {
-    if (int(o) == index) continue;
+    if (int(o) == index || !bounds_[size_t(index)].intersects(bounds_[o])) continue;
     const Lane& other = lanes_[o];
-    for (size_t i = 0; i + 1 < self.centerline.size(); ++i) {
-      const Eigen::Vector2d p = xy(self.centerline[i]);
-      const Eigen::Vector2d r = xy(self.centerline[i + 1]) - p;
-      for (size_t j = 0; j + 1 < other.centerline.size(); ++j) {
-        const Eigen::Vector2d q = xy(other.centerline[j]);
-        const Eigen::Vector2d d = xy(other.centerline[j + 1]) - q;
-        const double denom = cross2(r, d);
-        if (std::abs(denom) < 1e-9) continue;  // parallel lanes never cross
-        const double t = cross2(q - p, d) / denom;
-        const double u = cross2(q - p, r) / denom;
-        if (t < 0 || t >= 1 || u < 0 || u >= 1) continue;
-        out.push_back({int(o), self.s[i] + t * r.norm(), other.s[j] + u * d.norm()});
+    // Only the chunks whose extents meet can hold a crossing: the planner asks this for every
+    // start it tries a turn from.
+    for (size_t ci = 0; ci < self_chunks.size(); ++ci)
+      for (size_t cj = 0; cj < chunk_bounds_[o].size(); ++cj) {
+        if (!self_chunks[ci].intersects(chunk_bounds_[o][cj])) continue;
+        const size_t i_end = std::min((ci + 1) * kSegmentsPerChunk, self.centerline.size() - 1);
+        const size_t j_end = std::min((cj + 1) * kSegmentsPerChunk, other.centerline.size() - 1);
+        for (size_t i = ci * kSegmentsPerChunk; i < i_end; ++i) {
+          const Eigen::Vector2d p = xy(self.centerline[i]);
+          const Eigen::Vector2d r = xy(self.centerline[i + 1]) - p;
+          for (size_t j = cj * kSegmentsPerChunk; j < j_end; ++j) {
+            const Eigen::Vector2d q = xy(other.centerline[j]);
+            const Eigen::Vector2d d = xy(other.centerline[j + 1]) - q;
+            const double denom = cross2(r, d);
+            if (std::abs(denom) < 1e-9) continue;  // parallel lanes never cross
+            const double t = cross2(q - p, d) / denom;
+            const double u = cross2(q - p, r) / denom;
+            if (t < 0 || t >= 1 || u < 0 || u >= 1) continue;
+            out.push_back({int(o), self.s[i] + t * r.norm(), other.s[j] + u * d.norm()});
+          }
+        }
       }
-    }
   }
   std::sort(out.begin(), out.end(), [](const LaneCrossing& a, const LaneCrossing& b) { return a.s_self < b.s_self; });
   return out;

@@ -80,3 +80,36 @@ TEST(LaneMap, OnSomeLaneAgreesWithContainingAndRemembersTheLane) {
   }
   EXPECT_GT(on, 100);  // the sample reaches both outcomes
 }
+
+TEST(LaneMap, CrossingsByChunksAreTheCrossingsOfEverySegmentPair) {
+  // A winding lane crossed by straight lanes at several angles and by another winding lane.
+  std::vector<Lane> lanes{winding_lane("wind_a", 0), winding_lane("wind_b", 3)};
+  for (int k = 0; k < 6; ++k) {
+    Lane l;
+    l.id = "cross_" + std::to_string(k);
+    const double x = 10 + 15 * k, tilt = 4.0 * (k - 2);
+    for (int i = 0; i <= 8; ++i) l.centerline.emplace_back(x + tilt * (i - 4) / 4.0, -20 + 5 * i, 0);
+    lanes.push_back(l);
+  }
+  const LaneMap map(lanes);
+  for (size_t self = 0; self < lanes.size(); ++self) {
+    size_t brute = 0;  // every segment pair of this lane and each other one
+    for (size_t o = 0; o < lanes.size(); ++o) {
+      if (o == self) continue;
+      const auto& a = map.lanes()[self].centerline;
+      const auto& b = map.lanes()[o].centerline;
+      for (size_t i = 0; i + 1 < a.size(); ++i)
+        for (size_t j = 0; j + 1 < b.size(); ++j) {
+          const Eigen::Vector2d p = a[i].head<2>(), r = a[i + 1].head<2>() - p;
+          const Eigen::Vector2d q = b[j].head<2>(), d = b[j + 1].head<2>() - q;
+          const double denom = r.x() * d.y() - r.y() * d.x();
+          if (std::abs(denom) < 1e-9) continue;
+          const Eigen::Vector2d w = q - p;
+          const double t = (w.x() * d.y() - w.y() * d.x()) / denom, u = (w.x() * r.y() - w.y() * r.x()) / denom;
+          if (t >= 0 && t < 1 && u >= 0 && u < 1) ++brute;
+        }
+    }
+    EXPECT_EQ(map.crossings(int(self)).size(), brute) << lanes[self].id;
+    EXPECT_GT(brute, 0u) << lanes[self].id;
+  }
+}
