@@ -243,6 +243,19 @@ LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, 
   return plan;
 }
 
+namespace {
+
+// Whether every corner of the polyline turns by less than about 0.006 deg (most lane paths).
+bool is_straight(const Path& path) {
+  for (size_t i = 2; i < path.points.size(); ++i) {
+    const Eigen::Vector2d a = path.points[i - 1] - path.points[i - 2], b = path.points[i] - path.points[i - 1];
+    if (std::abs(a.x() * b.y() - a.y() * b.x()) > 1e-4 * a.norm() * b.norm() || a.dot(b) <= 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times, double a_lat,
                                    double a_long) {
   std::vector<double> out;
@@ -256,11 +269,7 @@ std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std
   const size_t n = size_t(std::ceil(path.length() / ds)) + 2;
   std::vector<double> v(n, v_desired);
   // A straight path (most lane paths) has no bend to slow for: skip sampling its curvature.
-  bool straight = true;
-  for (size_t i = 2; i < path.points.size() && straight; ++i) {
-    const Eigen::Vector2d a = path.points[i - 1] - path.points[i - 2], b = path.points[i] - path.points[i - 1];
-    straight = std::abs(a.x() * b.y() - a.y() * b.x()) <= 1e-4 * a.norm() * b.norm() && a.dot(b) > 0;
-  }
+  const bool straight = is_straight(path);
   for (size_t i = 0; i < n && !straight; ++i) {
     const double k = path.curvature_at(double(i) * ds);
     v[i] = std::min(v_desired, k > 1e-6 ? std::sqrt(a_lat / k) : v_desired);
@@ -298,6 +307,17 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
   };
   double bend_at = -1e9, max_lookahead = 1e9;
   out.push_back({x, y, wrap(yaw)});
+  // Pure pursuit from on a straight path, heading along it, never steers: the vehicle moves
+  // along the line by the reference's travel (what the steps below add up to, without them).
+  if (is_straight(path)) {
+    const Eigen::Vector2d along(std::cos(yaw), std::sin(yaw));
+    for (size_t i = 1; i < times.size(); ++i) {
+      while (t + 1e-9 < times[i]) t += dt;
+      const Eigen::Vector2d p = p0 + (reference(t) - arc.front()) * along;
+      out.push_back({p.x(), p.y(), wrap(yaw)});
+    }
+    return out;
+  }
   for (size_t i = 1; i < times.size(); ++i) {
     while (t + 1e-9 < times[i]) {
       const double s_now = reference(t), s_next = reference(t + dt);
