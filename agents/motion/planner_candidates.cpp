@@ -263,9 +263,10 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
   // Parked "on the left": at a parking lane on that side where the map has one in reach, not in
   // a lane of traffic; and where a camera sees it, not straight beside the ego.
   const bool side = placement == "left" || placement == "right";
-  const bool kerb_in_reach = side && wants_parked(false) && stopping_lane_in(region);
-  const auto bearings = side && wants_parked(false) && m_.distance_word != "close" ? camera_bearings(scene_)
-                                                                                  : decltype(camera_bearings(scene_)){};
+  const bool parked_side = side && wants_parked(false);
+  const bool kerb_in_reach = parked_side && stopping_lane_in(region);
+  const std::vector<std::pair<double, double>> bearings =
+      parked_side && m_.distance_word != "close" ? camera_bearings(scene_) : std::vector<std::pair<double, double>>{};
   for (size_t li = 0; li < lanes.size(); ++li) {
     const auto& lane = lanes[li];
     if (lane.type != "driving" && !lane.for_stopping()) continue;
