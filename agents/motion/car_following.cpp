@@ -68,13 +68,14 @@ std::vector<FollowedBox> near_path(const Bounds& b, const Eigen::Vector3d& own, 
 Leader nearest_leader(const Path& path, const Bounds& bounds, double s, const Eigen::Vector3d& own,
                       const std::vector<FollowedBox>& others, size_t frame, double frame_dt) {
   Leader best;
+  const Eigen::Vector2d here = path.at(s);
   for (const auto& o : others) {
     if (frame >= o.poses->size() || !(*o.poses)[frame]) continue;
     const Pose2& q = *(*o.poses)[frame];
     if (!bounds.contains(q, side_margin(own, o))) continue;
     // Far from where the vehicle is now: not within the window ahead (a cheap test first; this
     // runs for every obstacle, frame and candidate start).
-    if ((Eigen::Vector2d(q.x, q.y) - path.at(s)).squaredNorm() > kWindowM * kWindowM * 1.1) continue;
+    if ((Eigen::Vector2d(q.x, q.y) - here).squaredNorm() > kWindowM * kWindowM * 1.1) continue;
     const auto at = on_path(path, {q.x, q.y}, s, kWindowM);
     if (!at || at->first <= s) continue;
     if (at->second > side_margin(own, o)) continue;  // beside the path, not on it

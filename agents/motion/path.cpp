@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace chatsim::agents::motion {
@@ -211,6 +212,23 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
   return std::nullopt;
 }
 
+bool may_have_lane_beside(const scene::LaneMap& map, int lane, double s0, int dir, int sign) {
+  const Eigen::Vector2d p0 = map.point_at(lane, s0);
+  const double yaw0 = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
+  const Eigen::Vector2d normal(-std::sin(yaw0), std::cos(yaw0));
+  // lane_change_path's bounds widened by what its heading, taken over the path's first
+  // 0.75 m, may differ from the tangent's.
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    if (int(i) == lane || map.lanes()[i].type != "driving") continue;
+    const auto pos = map.project(int(i), p0);
+    const double lateral = (map.point_at(int(i), pos.s) - p0).dot(normal);
+    if (sign * lateral < 1.0 || sign * lateral > 7.0) continue;
+    if (std::abs(wrap(map.travel_yaw_at(int(i), pos.s) - yaw0)) > kPi / 3) continue;
+    return true;
+  }
+  return false;
+}
+
 LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length,
                                 double start_after_m, double change_length_m) {
   LaneChangePlan plan;
@@ -256,6 +274,14 @@ bool is_straight(const Path& path) {
 
 }  // namespace
 
+double arc_where_turned(const Path& path, double from, double degrees) {
+  const double yaw0 = path.yaw_at(from), limit = degrees * kPi / 180;
+  const auto first = std::lower_bound(path.s.begin(), path.s.end(), from);
+  for (auto it = first; it != path.s.end(); ++it)
+    if (std::abs(wrap(path.yaw_at(*it) - yaw0)) >= limit) return *it;
+  return std::numeric_limits<double>::infinity();
+}
+
 std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times, double a_lat,
                                    double a_long) {
   std::vector<double> out;
@@ -265,14 +291,18 @@ std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std
     return out;
   }
   // Speed limit per metre of path from curvature, then acceleration limits both ways.
-  const double ds = 0.5;
+  constexpr double ds = 0.5;  // half of curvature_at's 1 m: its headings fall on the grid
   const size_t n = size_t(std::ceil(path.length() / ds)) + 2;
   std::vector<double> v(n, v_desired);
   // A straight path (most lane paths) has no bend to slow for: skip sampling its curvature.
-  const bool straight = is_straight(path);
-  for (size_t i = 0; i < n && !straight; ++i) {
-    const double k = path.curvature_at(double(i) * ds);
-    v[i] = std::min(v_desired, k > 1e-6 ? std::sqrt(a_lat / k) : v_desired);
+  if (!is_straight(path)) {
+    // curvature_at(q) compares the headings 1 m either side: two grid steps. Each heading once.
+    std::vector<double> yaw(n + 4);
+    for (size_t j = 0; j < n + 4; ++j) yaw[j] = path.yaw_at((double(j) - 2) * ds);
+    for (size_t i = 0; i < n; ++i) {
+      const double k = std::abs(wrap(yaw[i + 4] - yaw[i])) / 2;
+      v[i] = std::min(v_desired, k > 1e-6 ? std::sqrt(a_lat / k) : v_desired);
+    }
   }
   for (size_t i = n - 1; i-- > 0;) v[i] = std::min(v[i], std::sqrt(v[i + 1] * v[i + 1] + 2 * a_long * ds));
   for (size_t i = 1; i < n; ++i) v[i] = std::min(v[i], std::sqrt(v[i - 1] * v[i - 1] + 2 * a_long * ds));
@@ -295,7 +325,7 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
   if (times.empty()) return out;
   const Eigen::Vector2d p0 = path.at(arc.front());
   double x = p0.x(), y = p0.y(), yaw = path.yaw_at(arc.front()), steer = 0;
-  const double dt = 0.01;
+  const double dt = 0.02;
   double t = times.front();
   size_t k = 0;
   auto reference = [&](double tt) {  // arc length of the reference at time tt
@@ -331,12 +361,14 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
         bend_at = s_now;
       }
       const double lookahead = std::max(2.5, std::min(std::max(3.0, 0.9 * v), max_lookahead));
-      const Eigen::Vector2d target = path.at(s_now + lookahead);
-      const double alpha = wrap(std::atan2(target.y() - y, target.x() - x) - yaw);
-      const double want = std::clamp(std::atan2(2 * wheelbase * std::sin(alpha), lookahead), -max_steer, max_steer);
+      const Eigen::Vector2d to_target = path.at(s_now + lookahead) - Eigen::Vector2d(x, y);
+      // sin of the angle from the heading to the target: the pure-pursuit law needs only that.
+      const double c = std::cos(yaw), sn = std::sin(yaw);
+      const double sin_alpha = (c * to_target.y() - sn * to_target.x()) / std::max(1e-9, to_target.norm());
+      const double want = std::clamp(std::atan2(2 * wheelbase * sin_alpha, lookahead), -max_steer, max_steer);
       steer += std::clamp(want - steer, -max_steer_rate * dt, max_steer_rate * dt);
-      x += v * std::cos(yaw) * dt;
-      y += v * std::sin(yaw) * dt;
+      x += v * c * dt;
+      y += v * sn * dt;
       yaw += v / wheelbase * std::tan(steer) * dt;
       t += dt;
     }

@@ -51,6 +51,9 @@ struct LaneChangePlan {
   Path path;
   std::string target_lane;   // empty: no lane there, moved by one lane width
 };
+// Whether a driving lane running the same way may lie one lane to the left (sign +1) or right
+// (-1) of the lane at s0: a looser test than lane_change_path's, and without building a path.
+bool may_have_lane_beside(const scene::LaneMap& map, int lane, double s0, int dir, int sign);
 // Follows the lane, then moves smoothly one lane to the left (sign +1) or right (-1).
 LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length,
                                 double start_after_m, double change_length_m);
@@ -59,6 +62,10 @@ LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, 
 // acceleration at most a_lat and starting at the allowed speed.
 std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times,
                                    double a_lat = 3.0, double a_long = 2.5);
+
+// The first arc length past `from` where the path heads at least `degrees` away from its
+// heading at `from`; infinity when it never does.
+double arc_where_turned(const Path& path, double from, double degrees);
 
 // Drives the path with a kinematic bicycle (wheelbase, steering angle and steering rate
 // limits) following a pure-pursuit controller whose reference moves along the path as

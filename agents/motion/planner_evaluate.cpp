@@ -7,6 +7,16 @@
 #include "agents/motion/car_following.hpp"
 
 namespace chatsim::agents::motion::detail {
+namespace {
+
+// Why a turn asked for does not happen in the clip; nullopt for an action that is not a turn.
+std::optional<std::string> turn_missing(const std::string& action) {
+  if (action == "turn_left") return "the left turn does not fit in the clip from here";
+  if (action == "turn_right") return "the right turn does not fit in the clip from here";
+  return std::nullopt;
+}
+
+}  // namespace
 
 double Planner::desired_speed(bool parked) const {
   if (parked) return 0;
@@ -127,6 +137,8 @@ Evaluated Planner::evaluate_at(const Candidate& c, double speed) const {
   const auto& connector = mv.connector;
   const bool reverse_yaw = mv.reverse_yaw;
   const auto free_arc = arc_lengths_at(path, e.speed, times_);
+  // Most starts of a turn far from its junction end here, before the steering is simulated.
+  if (turn_out_of_reach(path, free_arc, action)) return invalid(e, *turn_missing(action));
   const bool follows = action != "static" && !reverse_yaw;
   e.poses = poses_along(path, follows ? follow_traffic(path, free_arc, e) : free_arc, action, reverse_yaw);
   if (const auto why = action_missing(e.poses, action)) {
@@ -199,6 +211,7 @@ void Planner::try_overtake(const Candidate& c, Evaluated& e, std::string& action
   if (!speed_asked || lane_asked || (m_.action && *m_.action != "straight")) return;
   const double total = e.speed * (times_.back() + 1) + 20;
   for (int sign : {1, -1}) {
+    if (!may_have_lane_beside(scene_.lanes, c.lane, c.s, c.dir, sign)) continue;
     // Out at once and briskly: the slower car ahead is what it is passing.
     const auto lc = lane_change_path(scene_.lanes, c.lane, c.s, c.dir, sign, total, 2.0, std::max(15.0, e.speed * 1.5));
     if (lc.target_lane.empty()) continue;
@@ -230,8 +243,7 @@ std::vector<Pose2> Planner::poses_along(const Path& path, const std::vector<doub
 // Why the poses do not do the action within the clip, if they do not.
 std::optional<std::string> Planner::action_missing(const std::vector<Pose2>& poses, const std::string& action) {
   const double turned = wrap(poses.back().yaw - poses.front().yaw) / kDeg;
-  if (action == "turn_left" && turned < 60) return "the left turn does not fit in the clip from here";
-  if (action == "turn_right" && turned > -60) return "the right turn does not fit in the clip from here";
+  if ((action == "turn_left" && turned < 60) || (action == "turn_right" && turned > -60)) return turn_missing(action);
   if (action.rfind("lane_change", 0) == 0) {
     const double yaw0 = poses.front().yaw;
     const Eigen::Vector2d d(poses.back().x - poses.front().x, poses.back().y - poses.front().y);
@@ -239,6 +251,17 @@ std::optional<std::string> Planner::action_missing(const std::vector<Pose2>& pos
       return "the lane change does not fit in the clip from here";
   }
   return std::nullopt;
+}
+
+bool Planner::turn_out_of_reach(const Path& path, const std::vector<double>& free_arc, const std::string& action) const {
+  if (!turn_missing(action) || free_arc.size() < 2) return false;
+  double v_max = 0;
+  for (size_t f = 0; f + 1 < free_arc.size(); ++f)
+    v_max = std::max(v_max, (free_arc[f + 1] - free_arc[f]) / std::max(1e-6, times_[f + 1] - times_[f]));
+  // Pure pursuit steers toward a point up to max(3 m, 0.9 v) ahead: it turns that much before
+  // the path does. 5 m and 5 degrees more keep the test on the safe side of action_missing's.
+  const double lead_m = std::max(3.0, 0.9 * v_max) + 5.0;
+  return free_arc.back() + lead_m < arc_where_turned(path, free_arc.front(), 55.0);
 }
 
 // Slows behind whatever is ahead on the path (car following), and says when that costs much

@@ -124,6 +124,8 @@ class Planner {
 
   // Why the poses do not do the action within the clip, if they do not.
   static std::optional<std::string> action_missing(const std::vector<Pose2>& poses, const std::string& action);
+  // Whether a turn's bend lies beyond the farthest the free-flow profile reaches in the clip.
+  bool turn_out_of_reach(const Path& path, const std::vector<double>& free_arc, const std::string& action) const;
 
   // Slows behind whatever is ahead on the path (car following), and says when that costs much
   // of the speed asked for.
