@@ -267,8 +267,25 @@ std::string describe(const Selector& s) {
   return out;
 }
 
+namespace {
+
+// "everything on two wheels", "the two-wheelers": motorcycles and bicycles, each its own phrase.
+Words two_wheelers_named(Words w) {
+  size_t len = 0;
+  const size_t at = text::find_any(w, {"everything on two wheels", "anything on two wheels", "all on two wheels",
+                                       "everything with two wheels", "anything with two wheels", "two wheeled vehicles",
+                                       "two wheelers", "two wheeler", "on two wheels"}, &len);
+  if (at == std::string::npos) return w;
+  w.erase(w.begin() + long(at), w.begin() + long(at + len));
+  const Words both = text::words("all motorcycles and all bicycles");
+  w.insert(w.begin() + long(at), both.begin(), both.end());
+  return w;
+}
+
+}  // namespace
+
 DeletionRequest parse_deletion(const std::string& instruction) {
-  const Words w = text::words(instruction);
+  const Words w = two_wheelers_named(text::words(instruction));
   DeletionRequest r;
   // A tram or a horse cannot be added, but a scene may label one (KITTI, nuScenes): what can be
   // selected is the scene's to say.

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "agents/deletion/deletion.hpp"
 #include "agents/deletion/lane_relation.hpp"
@@ -14,10 +15,10 @@ namespace {
 
 struct Candidate {
   const scene::ObjectTrack* object;
-  Eigen::Vector2d pe;   // ego frame 0
+  Eigen::Vector2d pe;   // ego frame 0, or of the frame it comes into view
   double speed;
   LaneRelation lane;
-  double yaw = 0;       // heading, ego frame 0
+  double yaw = 0;       // heading, in the same frame as pe
 };
 
 // Of the matches, those behind, in front of or beside `anchor` (in its own heading), nearest first.
@@ -177,6 +178,27 @@ void keep_by_junction(const Selector& t, const scene::Scene& scene, std::vector<
   std::erase_if(m, [&](const Candidate* c) { return after ? c->pe.x() < span->to + 2 : c->pe.x() > span->from - 2; });
 }
 
+// The object as the user sees it: at frame 0 when it is there, else where it comes into view
+// (a real recording labels a car only once a sensor sees it), placed relative to the ego then,
+// as the video shows it. Speed over the part of the clip it is seen in.
+std::optional<Candidate> candidate_of(const scene::Scene& scene, const scene::ObjectTrack& o) {
+  if (o.track.empty() || scene.frames.empty()) return std::nullopt;
+  const int first = std::max(0, o.track.front().frame);
+  if (size_t(first) >= scene.frames.size()) return std::nullopt;
+  const auto p0 = o.at(first);
+  if (!p0) return std::nullopt;
+  const Eigen::Isometry3d to_ego = scene.frames[size_t(first)].ego_to_world.inverse();
+  double speed = 0;
+  const int last = o.track.back().frame;
+  if (last > first && scene.frames.size() > size_t(last)) {
+    const double dt = scene.frames[size_t(last)].timestamp_s - scene.frames[size_t(first)].timestamp_s;
+    if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
+  }
+  const double ego_turn = std::atan2(to_ego.linear()(1, 0), to_ego.linear()(0, 0));
+  return Candidate{&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>()),
+                   p0->yaw + ego_turn};
+}
+
 }  // namespace
 
 Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, const std::vector<std::string>& removed) {
@@ -185,22 +207,10 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     out.problems.push_back("there is no " + *r.unsupported + " in the scene, and it is not something that can be selected");
     return out;
   }
-  const Eigen::Isometry3d to_ego = scene.world_to_ego0();
   std::vector<Candidate> cands;
-  for (const auto& o : scene.objects) {
-    if (std::find(removed.begin(), removed.end(), o.id) != removed.end()) continue;
-    const auto p0 = o.at(0);
-    if (!p0) continue;
-    double speed = 0;
-    const int last = o.track.back().frame;
-    if (last > 0 && scene.frames.size() > size_t(last)) {
-      const double dt = scene.frames[size_t(last)].timestamp_s - scene.frames[0].timestamp_s;
-      if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
-    }
-    const double ego_turn = std::atan2(to_ego.linear()(1, 0), to_ego.linear()(0, 0));
-    cands.push_back({&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>()),
-                     p0->yaw + ego_turn});
-  }
+  for (const auto& o : scene.objects)
+    if (std::find(removed.begin(), removed.end(), o.id) == removed.end())
+      if (auto c = candidate_of(scene, o)) cands.push_back(*c);
   std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.pe.norm() < b.pe.norm(); });
   std::vector<std::string> chosen;
   const Candidate* last = nullptr;  // what the phrase before chose ("... and the truck behind it")

@@ -311,14 +311,32 @@ std::optional<std::pair<size_t, size_t>> unknown_vehicle_name(const std::vector<
   return std::make_pair(i, end);
 }
 
+namespace {
+
+std::optional<std::string> undoubled_vehicle_noun(const std::string& word) {
+  for (size_t i = 1; i < word.size(); ++i) {
+    if (word[i] != word[i - 1]) continue;
+    const std::string shorter = word.substr(0, i) + word.substr(i + 1);
+    if (!find_types({shorter}).empty()) return shorter;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 void correct_typos(std::vector<std::string>& w) {
   const auto& english = english_words();
   if (english.empty()) return;  // without a word list every unknown word could be a name: change nothing
   const auto& known = known_words();
   for (auto& word : w) {
-    if (word.size() < 3 || text::is_number_word(word) || english.contains(word) ||
-        std::binary_search(known.begin(), known.end(), word))
+    if (std::binary_search(known.begin(), known.end(), word)) continue;
+    // A vehicle noun typed with a doubled letter can be a rare English word ("buss"): in a
+    // command about vehicles it is the noun.
+    if (english.contains(word)) {
+      if (const auto noun = undoubled_vehicle_noun(word)) word = *noun;
       continue;
+    }
+    if (word.size() < 3 || text::is_number_word(word)) continue;
     if (!std::all_of(word.begin(), word.end(), [](char c) { return c >= 'a' && c <= 'z'; })) continue;
     const std::string* match = nullptr;
     int found = 0;

@@ -59,6 +59,9 @@ bool classify_whole(const Words& c, Instruction& in) {
                   "add back", "re-add", "readd", "put it back", "put them back", "undo", "add it back",
                   "add them back", "bring it back", "bring them back", "keep it", "keep that", "keep them",
                   "never mind", "nevermind"}) ||
+      // "keep the black ones (though)", "spare the bus": after a deletion, those come back.
+      ((first == "keep" || first == "spare") && c.size() > 1 && c[1] != "going" && c[1] != "driving" &&
+       c[1] != "moving") ||
       // "put the bus back", "bring the red car back"; not "put it 20 m further back" (a move)
       ((first == "put" || first == "bring") && c.size() > 2 && c.back() == "back" &&
        !has_any(c, {"further", "farther", "more"}) &&
@@ -93,6 +96,22 @@ bool classify_whole(const Words& c, Instruction& in) {
     in.kind = "delete";
     in.text = "remove all " + text::join(c, 1) + (mentions_vehicle(c) ? "" : " vehicles");
     return true;
+  }
+  // "empty the whole scene of vehicles", "clear the car park of trucks": all of those go; "clear
+  // the whole scene": every vehicle (a lane or place to clear stays a deletion there).
+  if ((first == "empty" || first == "clear" || first == "clean") && c.size() > 1) {
+    const size_t of = text::find_phrase(c, "of");
+    const Words after_of = of == std::string::npos ? Words{} : Words(c.begin() + long(of) + 1, c.end());
+    if (mentions_vehicle(after_of) || has_any(after_of, {"traffic", "everything", "anything"})) {
+      in.kind = "delete";
+      in.text = mentions_vehicle(after_of) ? "remove all " + text::join(after_of) : "remove all vehicles";
+      return true;
+    }
+    if (!mentions_vehicle(c) && has_any(c, {"scene", "whole", "entire", "everything", "picture", "frame", "view"})) {
+      in.kind = "delete";
+      in.text = "remove all vehicles";
+      return true;
+    }
   }
   if (has_any(c, {"road empty", "empty road", "empty the road", "empty street", "street empty", "no cars", "no vehicles",
                   "clear the road", "clear the street", "deserted", "without any cars", "without cars", "without vehicles",

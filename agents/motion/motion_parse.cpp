@@ -296,8 +296,13 @@ void find_direction(const Words& w, MotionIntent& m) {
     m.overtake = true;
     if (!m.speed && !m.speed_mps) m.speed = "fast";
   }
+  // "coming my way" is toward the ego, though "my way" alone ("going my way") is its direction.
+  const bool comes_my_way = has_any(w, {"coming my way", "comes my way", "come my way", "coming our way",
+                                        "comes our way", "heading my way", "headed my way", "heading our way"});
   // "the same direction as me": the ego's way; ahead of the ego that is away from it.
-  if (has_any(w, {"same direction as me", "same direction as us", "same way as me", "same way as us",
+  if (comes_my_way)
+    m.direction = "toward";
+  else if (has_any(w, {"same direction as me", "same direction as us", "same way as me", "same way as us",
                   "in the same direction", "the way i am going", "my way", "same direction", "same way",
                   "going my way"}))
     m.direction = m.placement == "back" ? "toward" : "away";
@@ -361,6 +366,11 @@ MotionIntent parse_motion(const std::string& instruction) {
       has_any(w, {"alongside me", "alongside us", "beside me", "beside us", "next to me", "next to us", "level with me",
                   "level with us", "abreast of me", "abreast of us"}))
     m.placement = m.lane == "right" || m.lane == "parking" ? "right" : "left";
+  // "following me", "on my tail": behind the ego, going its way.
+  if (!m.relative && (!m.placement || m.placement == "front") &&
+      has_any(w, {"following me", "following us", "follows me", "follows us", "follow me", "tailing me", "tailing us",
+                  "tailgating me", "tailgating us", "on my tail", "on our tail", "chasing me", "chasing us"}))
+    m.placement = "back";
   if (has_any(w, {"close front", "close to me", "near me", "nearby", "right in front", "just ahead", "close behind",
                   "close", "near"}))
     m.distance_word = "close";

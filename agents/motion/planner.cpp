@@ -136,6 +136,8 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
   for (const auto& l : ego_lane)
     if (scene.lanes.lanes()[size_t(l.lane)].type == "driving") {
       ego_lane_ = l.lane;
+      ego_lane_s_ = l.s;
+      ego_lane_dir_ = std::cos(wrap(l.tangent_yaw - ego_.yaw)) >= 0 ? 1 : -1;
       break;
     }
 }
@@ -184,6 +186,7 @@ PlanResult Planner::run_once() {
   PlanResult result;
   result.t_s = times_;
   if (scene_.lanes.empty()) return plan_without_lanes();
+  if (auto parked = parked_off_lane()) return *parked;
   std::vector<Candidate> cands = m_.relative ? relative_candidates() : region_candidates();
   if (cands.empty()) {
     result.reason = m_.relative ? "no lane position " + m_.relative->region + " of " + m_.relative->to +
@@ -302,6 +305,31 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
                                                  e.poses[std::min<size_t>(e.poses.size() - 1, 10)].y);
     result.resolved.direction = (q - p).dot(ego_.p - p) > 0 ? "toward" : "away";
   }
+  return result;
+}
+
+std::optional<PlanResult> Planner::parked_off_lane() const {
+  if (!m_.relative || m_.relative->region != "at" || !req_.anchor) return std::nullopt;
+  const Anchor& a = *req_.anchor;
+  const bool parked = wants_parked(false) || (a.speed_mps < 0.5 && nothing_said_about_motion());
+  if (!parked || !scene_.lanes.containing({a.start.x, a.start.y}, 0.5).empty()) return std::nullopt;
+  PlanResult result;
+  result.t_s = times_;
+  const Pose2 at{a.start.x, a.start.y, a.start.yaw};
+  result.trajectory.assign(times_.size(), at);
+  for (size_t f = 0; f < times_.size() && result.reason.empty(); ++f)
+    for (const auto& ob : req_.obstacles)
+      if (f < ob.poses.size() && ob.poses[f] && !ob.pedestrian &&
+          boxes_overlap(at, req_.size_lwh, *ob.poses[f], ob.size_lwh, 1.0, kClearanceM)) {
+        result.reason = "its place is taken: " + ob.id + " stands there at t = " + fmt(times_[f]) + " s";
+        break;
+      }
+  result.ok = result.reason.empty();
+  if (!result.ok) result.trajectory.clear();
+  result.speed_mps = 0;
+  result.resolved = m_;
+  result.resolved.action = "static";
+  result.resolved.speed = "static";
   return result;
 }
 

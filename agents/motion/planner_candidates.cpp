@@ -236,6 +236,20 @@ Region Planner::search_region(const std::string& placement, double widen) const 
   return region;
 }
 
+std::optional<RoadPlace> Planner::bend_place(const Eigen::Vector2d& world, const Region& region,
+                                             const std::string& placement) const {
+  if (ego_lane_ < 0 || (placement != "front" && placement != "back")) return std::nullopt;
+  const auto& map = scene_.lanes;
+  const auto pos = map.project(ego_lane_, world);
+  if (std::abs(pos.lateral) > 8.0) return std::nullopt;  // the ego's road: its lane and two beside
+  const double along = (pos.s - ego_lane_s_) * ego_lane_dir_ * (placement == "front" ? 1 : -1);
+  if (along < region.d_min || along > region.d_max) return std::nullopt;
+  // On a straight road the angle window says it all; only a bend takes the road off the axis.
+  const double lane_yaw = map.tangent_yaw_at(ego_lane_, pos.s) + (ego_lane_dir_ > 0 ? 0 : kPi);
+  if (std::abs(wrap(lane_yaw - ego_.yaw)) < 15 * kDeg) return std::nullopt;
+  return RoadPlace{along, pos.lateral};
+}
+
 bool Planner::stopping_lane_in(const Region& region) const {
   const auto& lanes = scene_.lanes.lanes();
   for (size_t li = 0; li < lanes.size(); ++li) {
@@ -278,16 +292,18 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
     if (lane.direction == scene::TrafficDirection::Both) dirs = {1, -1};
     else dirs = {m_.wrong_way.value_or(false) ? -legal_dir(lane) : legal_dir(lane)};
     for (double s = 0.5; s < lane.length(); s += 1.0) {
-      const Eigen::Vector2d pe = ego_.to_ego(scene_.lanes.point_at(int(li), s));
-      if (!in_region(region, pe) || (looked && in_region(*looked, pe))) continue;
+      const Eigen::Vector2d world = scene_.lanes.point_at(int(li), s), pe = ego_.to_ego(world);
+      const bool in_window = in_region(region, pe);
+      const auto road = in_window ? std::nullopt : bend_place(world, region, placement);
+      if ((!in_window && !road) || (looked && (in_region(*looked, pe) || bend_place(world, *looked, placement)))) continue;
       for (int dir : dirs) {
         const auto ds = direction_score(int(li), s, dir, parked);
         if (!ds) continue;
         Candidate c{int(li), s, dir, parked, *ds};
-        const double off = std::abs(pe.norm() - region.d_pref);
+        const double off = std::abs((road ? road->along : pe.norm()) - region.d_pref);
         c.score += lane_without_distance ? std::min(off, 30.0) + 0.1 * off : off;
         c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
-        if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(pe.y());
+        if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(road ? road->lateral : pe.y());
         if (side) c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x()) + 1.5 * degrees_out_of_sight(bearings, pe);
         if (parked && movable_ && !parking && (m_.action == "static")) c.score += 8;  // parked cars belong at the kerb
         if (!movable_ && parking) c.score += 3;
@@ -319,6 +335,17 @@ std::vector<Candidate> Planner::relative_candidates() const {
       dir = std::cos(wrap(a.start.yaw - pos.tangent_yaw)) >= 0 ? 1 : -1;
     }
   }
+  // Off every lane (a car park's bay, a kerb the map does not draw): the nearest lane beside it.
+  if (lane < 0)
+    for (size_t li = 0; li < scene_.lanes.lanes().size(); ++li) {
+      if (scene_.lanes.lanes()[li].type != "driving" && !scene_.lanes.lanes()[li].for_stopping()) continue;
+      const auto pos = scene_.lanes.project(int(li), ap);
+      if (std::abs(pos.lateral) >= std::min(best, kOffLaneReachM)) continue;
+      best = std::abs(pos.lateral);
+      lane = int(li);
+      s0 = pos.s;
+      dir = std::cos(wrap(a.start.yaw - pos.tangent_yaw)) >= 0 ? 1 : -1;
+    }
   if (lane < 0) return out;
   const std::string region = m_.relative->region;
   const double base_gap = (a.size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0;

@@ -136,7 +136,7 @@ Evaluated Planner::evaluate_at(const Candidate& c, double speed) const {
   const Path& path = mv.path;
   const auto& connector = mv.connector;
   const bool reverse_yaw = mv.reverse_yaw;
-  const auto free_arc = arc_lengths_at(path, e.speed, times_);
+  const auto free_arc = arc_lengths_at(path, e.speed, times_, bend_accel());
   // Most starts of a turn far from its junction end here, before the steering is simulated.
   if (turn_out_of_reach(path, free_arc, action)) return invalid(e, *turn_missing(action));
   const bool follows = action != "static" && !reverse_yaw;
@@ -218,7 +218,7 @@ void Planner::try_overtake(const Candidate& c, Evaluated& e, std::string& action
     Evaluated trial = e;
     trial.slowed_to = -1;
     trial.slow_penalty = 0;
-    const auto arc = follow_traffic(lc.path, arc_lengths_at(lc.path, e.speed, times_), trial);
+    const auto arc = follow_traffic(lc.path, arc_lengths_at(lc.path, e.speed, times_, bend_accel()), trial);
     if (trial.slowed_to >= 0) continue;
     trial.poses = poses_along(lc.path, arc, "lane_change", false);
     if (action_missing(trial.poses, "lane_change")) continue;
@@ -251,6 +251,13 @@ std::optional<std::string> Planner::action_missing(const std::vector<Pose2>& pos
       return "the lane change does not fit in the clip from here";
   }
   return std::nullopt;
+}
+
+// Sideways acceleration taken on bends: a driver asked to hurry takes them harder (about what a
+// brisk driver does on a dry road), everyone else comfortably.
+double Planner::bend_accel() const {
+  const bool hurried = m_.speed == "fast" || m_.speed == "faster" || (m_.speed_mps && *m_.speed_mps > 12.0);
+  return hurried ? 6.0 : 3.0;
 }
 
 bool Planner::turn_out_of_reach(const Path& path, const std::vector<double>& free_arc, const std::string& action) const {

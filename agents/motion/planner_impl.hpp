@@ -19,6 +19,8 @@ constexpr double kSlowPenalty = 30.0;
 // Clearance kept from every other box (each side): recorded vehicles pass a kerbside cone at
 // less than half a metre.
 constexpr double kClearanceM = 0.15;
+// How far off every lane a vehicle to place by may stand and still lend its nearest lane.
+constexpr double kOffLaneReachM = 12.0;
 // Score a start loses for driving off the mapped lanes before the clip ends.
 constexpr double kLeavesMapPenalty = 10.0;
 constexpr double kDeg = kPi / 180;
@@ -48,6 +50,12 @@ bool in_region(const Region& r, const Eigen::Vector2d& pe);
 // and how many degrees a point in the ego frame lies outside all of them (0: some camera sees it).
 std::vector<std::pair<double, double>> camera_bearings(const scene::Scene& scene);
 double degrees_out_of_sight(const std::vector<std::pair<double, double>>& bearings, const Eigen::Vector2d& pe);
+
+// A start placed by the ego's road rather than its axis: metres along the road from the ego
+// (ahead or behind, as the region says) and sideways from the ego's lane.
+struct RoadPlace {
+  double along = 0, lateral = 0;
+};
 
 struct Candidate {
   int lane = -1;
@@ -104,6 +112,9 @@ class Planner {
   std::vector<Candidate> region_candidates() const;
   std::vector<Candidate> region_candidates(bool moving_on_parking) const;
   bool stopping_lane_in(const Region& region) const;  // some parking lane or shoulder lies in it
+  // Where the ego's road bends away from its axis: a point beside that road ahead (or behind) by
+  // the region's distance, which the angle window would miss.
+  std::optional<RoadPlace> bend_place(const Eigen::Vector2d& world, const Region& region, const std::string& placement) const;
   Region search_region(const std::string& placement, double widen) const;
   void place_by_junction(const std::string& placement, double widen, Region& region) const;
   std::vector<Candidate> relative_candidates() const;
@@ -124,6 +135,7 @@ class Planner {
 
   // Why the poses do not do the action within the clip, if they do not.
   static std::optional<std::string> action_missing(const std::vector<Pose2>& poses, const std::string& action);
+  double bend_accel() const;  // m/s^2 sideways on bends
   // Whether a turn's bend lies beyond the farthest the free-flow profile reaches in the clip.
   bool turn_out_of_reach(const Path& path, const std::vector<double>& free_arc, const std::string& action) const;
 
@@ -133,6 +145,9 @@ class Planner {
   static Evaluated invalid(Evaluated e, const std::string& why);
   PlanResult finish(const Candidate& c, const Evaluated& e, PlanResult result) const;
   PlanResult plan_without_lanes() const;
+  // Parked in a removed vehicle's place where no lane runs ("park a van where the truck was"):
+  // standing at its pose; nullopt when a lane runs there or it should not stand.
+  std::optional<PlanResult> parked_off_lane() const;
   double lateral_of(int lane) const;  // signed ego-frame lateral offset of a lane near the ego
 
   std::string describe_placement() const { return m_.placement.value_or("front"); }
@@ -144,6 +159,8 @@ class Planner {
   std::vector<double> times_;
   bool movable_ = true;
   int ego_lane_ = -1;
+  double ego_lane_s_ = 0;   // the ego's arc length on it
+  int ego_lane_dir_ = 1;    // +1: the ego drives along the centreline's order
   double widen_ = 1.0;     // distance tolerance factor (see run)
   bool collided_ = false;  // the last run_once accepted a collision
   mutable bool lane_missed_ = false;  // the last run_once's start is not on the lane asked for

@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 
 #include "agents/core/agent_registry.hpp"
 #include "bench/command_grader.hpp"
+#include "common/import/nuscenes_import.hpp"
 #include "tests/support/scratch_dir.hpp"
 #include "tests/support/synthetic_scene.hpp"
 
@@ -59,7 +61,7 @@ struct SetScore {
   int passed = 0, total = 0, vehicles = 0, overlapping = 0;
 };
 
-SetScore score_set(const fs::path& cases_file) {
+SetScore score_set(const fs::path& cases_file, const std::optional<fs::path>& scene_dir = std::nullopt) {
   std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend("offline");
   agents::manager::Manager manager(agents::local_caller(backend), backend);
   std::map<std::string, scene::Scene> scenes;
@@ -68,7 +70,7 @@ SetScore score_set(const fs::path& cases_file) {
   for (std::string line; std::getline(in, line);) {
     if (line.empty()) continue;
     const auto c = nlohmann::json::parse(line);
-    const auto dir = (cases_file.parent_path() / c["scene"].get<std::string>()).string();
+    const auto dir = scene_dir ? scene_dir->string() : (cases_file.parent_path() / c["scene"].get<std::string>()).string();
     if (!scenes.contains(dir)) scenes.emplace(dir, scene::load_scene(dir));
     nlohmann::json state;
     for (const auto& r : c["rounds"]) state = manager.chat(c["id"], dir, r.get<std::string>()).edit_state;
@@ -130,6 +132,23 @@ TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
     EXPECT_EQ(s.overlapping, 0) << file << ": " << s.overlapping << " of " << s.vehicles << " added vehicles meet another";
   }
+}
+
+// Blind set v22: commands on a real recording (nuScenes scene-0916 as `chatsim scene import
+// nuscenes` writes it), frozen before its first run (0.53).
+TEST(Commands, BlindSetOnARealRecordingKeepsItsScore) {
+  const auto data = test_support::shared_commands_dir().parent_path() / "nuscenes-scene-0916";
+  if (!fs::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
+  import::NuScenesOptions o;
+  o.dataroot = data;
+  o.lidar = false;
+  const auto dir = chatsim::scratch::dir() / ("chatsim-v22-" + std::to_string(::getpid()));
+  import::import_nuscenes(o, dir);
+  const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data/commands-blind-v22-nuscenes.jsonl", dir);
+  fs::remove_all(dir);
+  ASSERT_GE(s.total, 50);
+  EXPECT_GE(double(s.passed) / s.total, 0.95) << s.passed << "/" << s.total;
+  EXPECT_EQ(s.overlapping, 0) << s.overlapping << " of " << s.vehicles << " added vehicles meet another";
 }
 
 // Multi-round state: references across rounds, put back, and nothing lost after a refusal.
