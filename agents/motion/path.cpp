@@ -325,7 +325,7 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
   if (times.empty()) return out;
   const Eigen::Vector2d p0 = path.at(arc.front());
   double x = p0.x(), y = p0.y(), yaw = path.yaw_at(arc.front()), steer = 0;
-  const double dt = 0.02;
+  const double dt = 0.02;  // the shortest step, and the straight case's
   double t = times.front();
   size_t k = 0;
   auto reference = [&](double tt) {  // arc length of the reference at time tt
@@ -348,10 +348,14 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
     }
     return out;
   }
+  double v = (reference(t + dt) - arc.front()) / dt;
   for (size_t i = 1; i < times.size(); ++i) {
     while (t + 1e-9 < times[i]) {
-      const double s_now = reference(t), s_next = reference(t + dt);
-      const double v = (s_next - s_now) / dt;
+      // Steps of about 0.3 m of travel, 20 to 100 ms, ending on each frame: a slow vehicle (a
+      // jam) needs few of them.
+      const double h = std::min(std::clamp(0.3 / std::max(v, 1e-3), dt, 5 * dt), times[i] - t);
+      const double s_now = reference(t), s_next = reference(t + h);
+      v = (s_next - s_now) / h;
       // Pure pursuit cuts a bend of radius R by about L^2 / 2R: keep that within a metre. The
       // bend, half a look-ahead on, is looked up every 0.3 m (this runs for every step of every
       // candidate path).
@@ -366,11 +370,11 @@ std::vector<Pose2> bicycle_track(const Path& path, const std::vector<double>& ar
       const double c = std::cos(yaw), sn = std::sin(yaw);
       const double sin_alpha = (c * to_target.y() - sn * to_target.x()) / std::max(1e-9, to_target.norm());
       const double want = std::clamp(std::atan2(2 * wheelbase * sin_alpha, lookahead), -max_steer, max_steer);
-      steer += std::clamp(want - steer, -max_steer_rate * dt, max_steer_rate * dt);
-      x += v * c * dt;
-      y += v * sn * dt;
-      yaw += v / wheelbase * std::tan(steer) * dt;
-      t += dt;
+      steer += std::clamp(want - steer, -max_steer_rate * h, max_steer_rate * h);
+      x += v * c * h;
+      y += v * sn * h;
+      yaw += v / wheelbase * std::tan(steer) * h;
+      t += h;
     }
     out.push_back({x, y, wrap(yaw)});
   }

@@ -108,3 +108,23 @@ TEST(MotionPath, MayHaveLaneBesideAnswersLikeTheLaneChangeItGuards) {
   EXPECT_TRUE(may_have_lane_beside(map, 0, 50, 1, 1));
   EXPECT_FALSE(may_have_lane_beside(map, 0, 50, 1, -1));  // the lane there runs the other way
 }
+
+TEST(MotionPath, PursuitStaysOnABendAtAnySpeed) {
+  // Its steps are about 0.3 m of travel (20 to 100 ms): slow or fast, the tracked vehicle cuts the
+  // bend by at most the metre its look-ahead allows, and ends each frame where the frame is.
+  const Path bend = straight_then_left(20, 15);
+  const auto times = clip_times(10);
+  for (double speed : {1.5, 3.0, 6.0, 12.0}) {
+    const auto arc = arc_lengths_at(bend, speed, times);
+    const auto poses = bicycle_track(bend, arc, times);
+    ASSERT_EQ(poses.size(), times.size());
+    double worst = 0;
+    for (size_t f = 0; f < poses.size() && arc[f] < bend.length() - 3; ++f) {  // past its end it runs on straight
+      const auto& q = poses[f];
+      double nearest = 1e9;
+      for (const auto& p : bend.points) nearest = std::min(nearest, std::hypot(p.x() - q.x, p.y() - q.y));
+      worst = std::max(worst, nearest);
+    }
+    EXPECT_LT(worst, 1.0) << speed << " m/s";
+  }
+}
