@@ -236,8 +236,8 @@ void Manager::do_restore(Conversation& c, const Instruction& in, Round& round) {
 bool Manager::restore_described(Conversation& c, const std::vector<std::string>& w, Round& round) {
   std::vector<std::string> description;
   for (const auto& x : w)
-    if (!text::has_any({x}, {"bring", "put", "back", "restore", "please", "again", "undelete", "keep", "spare", "though",
-                             "but", "actually"}))
+    if (!text::has_any({x}, {"bring", "put", "back", "restore", "please", "again", "undelete", "keep", "spare",
+                             "though", "but", "actually"}))
       description.push_back(x);
   const bool describes = !lexicon::find_types(description).empty() || !lexicon::find_colors(description).empty();
   if (!describes) return false;

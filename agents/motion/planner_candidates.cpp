@@ -295,7 +295,8 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
       const Eigen::Vector2d world = scene_.lanes.point_at(int(li), s), pe = ego_.to_ego(world);
       const bool in_window = in_region(region, pe);
       const auto road = in_window ? std::nullopt : bend_place(world, region, placement);
-      if ((!in_window && !road) || (looked && (in_region(*looked, pe) || bend_place(world, *looked, placement)))) continue;
+      const bool looked_there = looked && (in_region(*looked, pe) || bend_place(world, *looked, placement));
+      if ((!in_window && !road) || looked_there) continue;
       for (int dir : dirs) {
         const auto ds = direction_score(int(li), s, dir, parked);
         if (!ds) continue;

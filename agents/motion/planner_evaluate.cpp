@@ -260,7 +260,8 @@ double Planner::bend_accel() const {
   return hurried ? 6.0 : 3.0;
 }
 
-bool Planner::turn_out_of_reach(const Path& path, const std::vector<double>& free_arc, const std::string& action) const {
+bool Planner::turn_out_of_reach(const Path& path, const std::vector<double>& free_arc,
+                                const std::string& action) const {
   if (!turn_missing(action) || free_arc.size() < 2) return false;
   double v_max = 0;
   for (size_t f = 0; f + 1 < free_arc.size(); ++f)

@@ -114,7 +114,8 @@ class Planner {
   bool stopping_lane_in(const Region& region) const;  // some parking lane or shoulder lies in it
   // Where the ego's road bends away from its axis: a point beside that road ahead (or behind) by
   // the region's distance, which the angle window would miss.
-  std::optional<RoadPlace> bend_place(const Eigen::Vector2d& world, const Region& region, const std::string& placement) const;
+  std::optional<RoadPlace> bend_place(const Eigen::Vector2d& world, const Region& region,
+                                      const std::string& placement) const;
   Region search_region(const std::string& placement, double widen) const;
   void place_by_junction(const std::string& placement, double widen, Region& region) const;
   std::vector<Candidate> relative_candidates() const;

@@ -70,7 +70,8 @@ SetScore score_set(const fs::path& cases_file, const std::optional<fs::path>& sc
   for (std::string line; std::getline(in, line);) {
     if (line.empty()) continue;
     const auto c = nlohmann::json::parse(line);
-    const auto dir = scene_dir ? scene_dir->string() : (cases_file.parent_path() / c["scene"].get<std::string>()).string();
+    const auto dir =
+        scene_dir ? scene_dir->string() : (cases_file.parent_path() / c["scene"].get<std::string>()).string();
     if (!scenes.contains(dir)) scenes.emplace(dir, scene::load_scene(dir));
     nlohmann::json state;
     for (const auto& r : c["rounds"]) state = manager.chat(c["id"], dir, r.get<std::string>()).edit_state;

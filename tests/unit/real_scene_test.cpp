@@ -104,7 +104,8 @@ std::string* RealScene::dir_ = nullptr;
 }  // namespace
 
 TEST_F(RealScene, ObjectsLabelledOnlyOnceSeenCanBeSelected) {
-  EXPECT_EQ(removed(chat("a", "delete the motorcycles")), (std::vector<std::string>{"late_moto_black", "late_moto_grey"}));
+  EXPECT_EQ(removed(chat("a", "delete the motorcycles")),
+            (std::vector<std::string>{"late_moto_black", "late_moto_grey"}));
   EXPECT_EQ(removed(chat("b", "remove the black cars")), (std::vector<std::string>{"late_black_car"}));
   EXPECT_EQ(removed(chat("c", "remove the truck")), (std::vector<std::string>{"bay_truck"}));
 }
