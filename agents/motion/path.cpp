@@ -212,45 +212,48 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
   return std::nullopt;
 }
 
-bool may_have_lane_beside(const scene::LaneMap& map, int lane, double s0, int dir, int sign) {
-  const Eigen::Vector2d p0 = map.point_at(lane, s0);
-  const double yaw0 = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
-  const Eigen::Vector2d normal(-std::sin(yaw0), std::cos(yaw0));
-  // lane_change_path's bounds widened by what its heading, taken over the path's first
-  // 0.75 m, may differ from the tangent's.
+namespace {
+
+struct LaneBeside {
+  int lane = -1;
+  double lateral = 0;  // signed, left of travel positive
+};
+
+// The nearest driving lane other than `lane` whose centre lies `lat_min`..`lat_max` m to the
+// `sign` side of p0 (facing yaw0) and whose traffic runs within `max_angle` of yaw0.
+std::optional<LaneBeside> nearest_lane_beside(const scene::LaneMap& map, int lane, const Eigen::Vector2d& p0, double yaw0,
+                                              int sign, double lat_min, double lat_max, double max_angle) {
+  const Eigen::Vector2d normal(-std::sin(yaw0), std::cos(yaw0));  // left of travel
+  std::optional<LaneBeside> best;
   for (size_t i = 0; i < map.lanes().size(); ++i) {
     if (int(i) == lane || map.lanes()[i].type != "driving") continue;
     const auto pos = map.project(int(i), p0);
     const double lateral = (map.point_at(int(i), pos.s) - p0).dot(normal);
-    if (sign * lateral < 1.0 || sign * lateral > 7.0) continue;
-    if (std::abs(wrap(map.travel_yaw_at(int(i), pos.s) - yaw0)) > kPi / 3) continue;
-    return true;
+    if (sign * lateral < lat_min || sign * lateral > lat_max) continue;
+    if (std::abs(wrap(map.travel_yaw_at(int(i), pos.s) - yaw0)) > max_angle) continue;
+    if (!best || std::abs(lateral) < std::abs(best->lateral)) best = LaneBeside{int(i), lateral};
   }
-  return false;
+  return best;
+}
+
+}  // namespace
+
+bool may_have_lane_beside(const scene::LaneMap& map, int lane, double s0, int dir, int sign) {
+  // lane_change_path's bounds widened by what its heading, taken over the path's first 0.75 m,
+  // may differ from the tangent's.
+  const double yaw0 = map.tangent_yaw_at(lane, s0) + (dir > 0 ? 0 : kPi);
+  return nearest_lane_beside(map, lane, map.point_at(lane, s0), yaw0, sign, 1.0, 7.0, kPi / 3).has_value();
 }
 
 LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length,
                                 double start_after_m, double change_length_m) {
   LaneChangePlan plan;
   const Path base = lane_path(map, lane, s0, dir, length);
-  const Eigen::Vector2d p0 = base.at(0);
-  const double yaw0 = base.yaw_at(0);
-  const Eigen::Vector2d normal(-std::sin(yaw0), std::cos(yaw0));  // left of travel
-  // The neighbouring lane in the same travel direction, one lane to that side.
+  // The neighbouring lane in the same travel direction, one lane to that side; none: one lane width.
   double offset = sign * map.lanes()[size_t(lane)].width;
-  double best = 1e9;
-  for (size_t i = 0; i < map.lanes().size(); ++i) {
-    if (int(i) == lane || map.lanes()[i].type != "driving") continue;
-    const auto pos = map.project(int(i), p0);
-    const Eigen::Vector2d q = map.point_at(int(i), pos.s);
-    const double lateral = (q - p0).dot(normal);
-    if (sign * lateral < 1.5 || sign * lateral > 6.0) continue;
-    if (std::abs(wrap(map.travel_yaw_at(int(i), pos.s) - yaw0)) > kPi / 4) continue;
-    if (std::abs(lateral) < best) {
-      best = std::abs(lateral);
-      offset = lateral;
-      plan.target_lane = map.lanes()[i].id;
-    }
+  if (const auto beside = nearest_lane_beside(map, lane, base.at(0), base.yaw_at(0), sign, 1.5, 6.0, kPi / 4)) {
+    offset = beside->lateral;
+    plan.target_lane = map.lanes()[size_t(beside->lane)].id;
   }
   for (size_t i = 0; i < base.points.size(); ++i) {
     const double u = std::clamp((base.s[i] - start_after_m) / change_length_m, 0.0, 1.0);

@@ -239,6 +239,9 @@ Region Planner::search_region(const std::string& placement, double widen) const 
 std::optional<RoadPlace> Planner::bend_place(const Eigen::Vector2d& world, const Region& region,
                                              const std::string& placement) const {
   if (ego_lane_ < 0 || (placement != "front" && placement != "back")) return std::nullopt;
+  // Along the road is never shorter than straight across: a point too far even straight across
+  // (plus the road's width and the ego's offset in its lane) is out, without projecting it.
+  if ((world - ego_.p).norm() > region.d_max + 10.0) return std::nullopt;  // runs for every lane metre
   const auto& map = scene_.lanes;
   const auto pos = map.project(ego_lane_, world);
   if (std::abs(pos.lateral) > 8.0) return std::nullopt;  // the ego's road: its lane and two beside

@@ -13,6 +13,20 @@
 
 namespace test_support {
 
+// One 640x426 camera looking ahead from 1.5 m forward, 1.6 m up.
+inline chatsim::scene::Camera front_camera() {
+  chatsim::scene::Camera cam;
+  cam.name = "front";
+  cam.width = 640;
+  cam.height = 426;
+  cam.fx = cam.fy = 600;
+  cam.cx = 320;
+  cam.cy = 213;
+  cam.sensor_to_ego.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;  // OpenCV camera axes in the ego FLU frame
+  cam.sensor_to_ego.translation() = Eigen::Vector3d(1.5, 0, 1.6);
+  return cam;
+}
+
 inline chatsim::scene::Scene synthetic_scene(bool with_lanes = true) {
   using namespace chatsim::scene;
   Scene s;
@@ -20,18 +34,7 @@ inline chatsim::scene::Scene synthetic_scene(bool with_lanes = true) {
   s.source = "tests";
   s.layout_only = true;
   s.frame_rate_hz = 10;
-  Camera cam;
-  cam.name = "front";
-  cam.width = 640;
-  cam.height = 426;
-  cam.fx = cam.fy = 600;
-  cam.cx = 320;
-  cam.cy = 213;
-  Eigen::Matrix3d r;
-  r << 0, 0, 1, -1, 0, 0, 0, -1, 0;  // OpenCV camera axes in the ego FLU frame
-  cam.sensor_to_ego.linear() = r;
-  cam.sensor_to_ego.translation() = Eigen::Vector3d(1.5, 0, 1.6);
-  s.cameras.push_back(cam);
+  s.cameras.push_back(front_camera());
   for (int i = 0; i < 51; ++i) {
     Frame f;
     f.index = i;

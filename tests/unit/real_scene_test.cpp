@@ -12,6 +12,7 @@
 #include "agents/manager/manager.hpp"
 #include "common/scene/scene.hpp"
 #include "tests/support/scratch_dir.hpp"
+#include "tests/support/synthetic_scene.hpp"
 
 using namespace chatsim;
 using nlohmann::json;
@@ -45,15 +46,7 @@ std::string car_park_scene() {
   s.source = "tests";
   s.layout_only = true;
   s.frame_rate_hz = 10;
-  Camera cam;
-  cam.name = "front";
-  cam.width = 640;
-  cam.height = 426;
-  cam.fx = cam.fy = 600;
-  cam.cx = 320;
-  cam.cy = 213;
-  cam.sensor_to_ego.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  s.cameras.push_back(cam);
+  s.cameras.push_back(test_support::front_camera());
   for (int i = 0; i < 101; ++i) {  // the ego at 3 m/s along the straight, so it never reaches the bend
     Frame f;
     f.index = i;
