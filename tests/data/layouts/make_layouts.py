@@ -15,6 +15,7 @@ Run from anywhere: python3 tests/data/layouts/make_layouts.py (deterministic, no
 import math
 
 import layouts_v21
+import layouts_v23
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -404,3 +405,4 @@ if __name__ == "__main__":
     tee()
     more_layouts.main()
     layouts_v21.main()
+    layouts_v23.main()
