@@ -44,7 +44,8 @@ def queue():
 
 
 def reversing_out(x, y, start_frame, speed):
-    """A car nose-in in a bay facing north (+y), reversing south out of it from start_frame."""
+    """A car nose-in in a bay facing north (+y), reversing south out of it from start_frame (after the car
+    coming down the aisle has passed: a recording never holds two vehicles in one place)."""
     out = []
     for f in range(FRAMES):
         back = max(0.0, (f - start_frame) / HZ * speed)
@@ -67,7 +68,7 @@ def carpark():
     objects = [obj(1, "vehicle.car", static(10, -4, SOUTH), "red"),
                obj(2, "vehicle.car", static(13, -4, SOUTH), "white", SIZES["suv"]),
                obj(3, "vehicle.car", static(20, 7, NORTH), "black"),
-               obj(4, "vehicle.car", reversing_out(35, 7, 15, 0.8), "blue"),
+               obj(4, "vehicle.car", reversing_out(35, 7, 75, 1.0), "blue"),
                obj(5, "vehicle.car", static(40, -4, SOUTH), "silver"),
                obj(6, "vehicle.car", static(43, -4, NORTH), "grey", VAN),
                obj(7, "vehicle.car", track_along(line(160, 3, -60, 3), 105, 3), "green"),
