@@ -53,7 +53,7 @@ AssetRequest parse_asset(const std::string& instruction) {
   if (!ungoverned.empty() || !lexicon::find_brands(w).empty()) types = ungoverned;
   for (size_t k = 0; k < types.size(); ++k) {
     const auto& t = types[k];
-    if (t.type.type == "object" || t.type.living()) continue;
+    if (!t.type.addable()) continue;
     r.type = t.type.type;
     // "a police motorbike": of two nouns in a row the last is the head ("police" only qualifies it).
     if (k + 1 < types.size() && types[k + 1].begin == t.end && types[k + 1].type.type != "object")

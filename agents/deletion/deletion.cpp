@@ -91,7 +91,7 @@ std::optional<std::string> lane_words(const Words& p) {
   if (text::has_any(p, {"left lane", "left hand lane"})) return "left";
   if (text::has_any(p, {"right lane", "right hand lane"})) return "right";
   if (text::has_any(p, {"oncoming", "other carriageway", "opposite carriageway", "opposite direction",
-                        "other direction", "the other way", "coming toward", "toward me", "toward us", "coming at me",
+                        "other direction", "the other way", "opposite way", "coming toward", "toward me", "toward us", "coming at me",
                         "coming at us"}))
     return "oncoming";
   // "at the crossing" is a place; "the person crossing the road" says what the person does.
@@ -242,10 +242,14 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting",
                         "broken down", "stalled", "abandoned", "crashed", "disabled"}))
     s.moving = false;
+  else if (text::has_any(p, {"backing", "backs out", "backs up", "reversing", "reverses", "in reverse",
+                             "going backwards", "going backward"}))
+    s.reversing = true;  // it may stand for most of the clip: moving on the whole says little
   else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling", "pulling out", "pulling away",
-                             "leaving", "exiting", "driving out", "coming out", "backing out", "reversing out"}))
+                             "leaving", "exiting", "driving out", "coming out"}))
     s.moving = true;
-  s.parked = text::has_any(p, {"parked", "parking"});
+  // "the row of bays on the left", "the cars in the spaces": what stands in a bay is parked.
+  s.parked = text::has_any(p, {"parked", "parking", "bay", "bays", "spaces", "spots", "parking space"});
   read_order_and_count(p, types, s);
   return s;
 }
@@ -257,6 +261,7 @@ std::string describe(const Selector& s) {
   if (s.order) out += (s.nth > 1 ? std::to_string(s.nth) + (s.nth == 2 ? "nd " : s.nth == 3 ? "rd " : "th ") : "") +
                       *s.order + " ";
   if (s.moving) out += *s.moving ? "moving " : "parked ";
+  if (s.reversing) out += "reversing ";
   if (s.color) out += *s.color + " ";
   out += s.noun.empty() ? "object" : s.noun;
   if (s.region) out += " (" + *s.region + ")";

@@ -25,6 +25,7 @@ struct Selector {
   std::optional<bool> moving;
   bool parked = false;                  // "parked": standing at the kerb, not waiting in a lane
   std::optional<bool> approaching;      // moving toward the ego ("the car coming toward us")
+  bool reversing = false;               // moves backwards at some time ("the car backing out of its bay")
   std::string quantity = "one";         // one, all, n
   int n = 1;
   std::optional<std::string> order;     // nearest, farthest

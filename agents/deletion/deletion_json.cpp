@@ -19,6 +19,7 @@ nlohmann::json selector_json(const Selector& s) {
   if (s.anchor_only) j["anchor_only"] = true;
   util::put_optional(j, "approaching", s.approaching);
   util::put_optional(j, "moving", s.moving);
+  if (s.reversing) j["reversing"] = true;
   if (s.parked) j["parked"] = true;
   if (s.order) {
     j["order"] = *s.order;
@@ -44,6 +45,7 @@ Selector selector_from(const nlohmann::json& j) {
   util::get_optional(j, "approaching", s.approaching);
   util::get_optional(j, "moving", s.moving);
   s.parked = j.value("parked", false);
+  s.reversing = j.value("reversing", false);
   util::get_optional(j, "order", s.order);
   s.nth = j.value("nth", 1);
   return s;

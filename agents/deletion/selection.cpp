@@ -19,6 +19,8 @@ struct Candidate {
   double speed;
   LaneRelation lane;
   double yaw = 0;       // heading, in the same frame as pe
+  bool reverses = false;  // moves against its heading at some time
+  double d0 = 0;          // from the ego at frame 0: what "nearest" compares, all at one time
 };
 
 // Of the matches, those behind, in front of or beside `anchor` (in its own heading), nearest first.
@@ -58,6 +60,7 @@ bool matches(const Selector& s, const Candidate& c) {
   if (!s.category.empty() && !c.object->has_category_prefix(s.category)) return false;
   if (s.color && (!c.object->color_rgb || lexicon::color_class(*c.object->color_rgb) != *s.color)) return false;
   if (s.moving && (c.speed > 0.5) != *s.moving) return false;
+  if (s.reversing && !c.reverses) return false;
   if (s.lane && !has_lane(c.lane, *s.lane)) return false;
   if (s.road_side && !has_lane(c.lane, *s.road_side)) return false;
   if (s.approaching) {  // its heading points at the ego's place
@@ -178,6 +181,20 @@ void keep_by_junction(const Selector& t, const scene::Scene& scene, std::vector<
   std::erase_if(m, [&](const Candidate* c) { return after ? c->pe.x() < span->to + 2 : c->pe.x() > span->from - 2; });
 }
 
+// Whether the object moves at least 0.8 m against its heading within two seconds somewhere in the
+// clip (more than a label's jitter, less than backing out of a bay).
+bool reverses(const scene::ObjectTrack& o, double frame_rate_hz) {
+  const int window = std::max(1, int(std::lround(2 * frame_rate_hz)));
+  const auto& t = o.track;
+  for (size_t i = 0, j = 0; i < t.size(); ++i) {
+    while (j < t.size() && t[j].frame < t[i].frame + window) ++j;
+    if (j == t.size()) break;
+    const Eigen::Vector2d d = (t[j].center - t[i].center).head<2>();
+    if (std::cos(t[i].yaw) * d.x() + std::sin(t[i].yaw) * d.y() < -0.8) return true;
+  }
+  return false;
+}
+
 // The object as the user sees it: at frame 0 when it is there, else where it comes into view
 // (a real recording labels a car only once a sensor sees it), placed relative to the ego then,
 // as the video shows it. Speed over the part of the clip it is seen in.
@@ -195,8 +212,9 @@ std::optional<Candidate> candidate_of(const scene::Scene& scene, const scene::Ob
     if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
   }
   const double ego_turn = std::atan2(to_ego.linear()(1, 0), to_ego.linear()(0, 0));
+  const double d0 = (scene.frames.front().ego_to_world.inverse() * p0->center).head<2>().norm();
   return Candidate{&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>()),
-                   p0->yaw + ego_turn};
+                   p0->yaw + ego_turn, reverses(o, scene.frame_rate_hz), d0};
 }
 
 }  // namespace
@@ -211,7 +229,7 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
   for (const auto& o : scene.objects)
     if (std::find(removed.begin(), removed.end(), o.id) == removed.end())
       if (auto c = candidate_of(scene, o)) cands.push_back(*c);
-  std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.pe.norm() < b.pe.norm(); });
+  std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.d0 < b.d0; });
   std::vector<std::string> chosen;
   const Candidate* last = nullptr;  // what the phrase before chose ("... and the truck behind it")
   for (const auto& t : r.targets) {

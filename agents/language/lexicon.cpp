@@ -12,10 +12,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "agents/language/makes.hpp"
 #include "agents/language/text.hpp"
 
 namespace chatsim::agents::lexicon {
 namespace {
+
+using detail::is_unit_word;
+using detail::makes;
+using detail::vocabulary_file;
+using detail::words_at;
 
 struct NamedColor {
   const char* name;
@@ -86,52 +92,6 @@ struct Noun {
 };
 
 
-// A make and its models as vehicles.json lists them, each name already split into words.
-struct Make {
-  std::string brand, type;
-  std::vector<std::vector<std::string>> names;
-  std::vector<std::pair<std::vector<std::string>, std::string>> models;  // longest first
-  std::vector<std::vector<std::string>> ambiguous;  // names that are also ordinary words ("seat", not "cupra")
-};
-
-std::filesystem::path vocabulary_file() {
-  if (const char* env = std::getenv("CHATSIM_PROMPTS"); env != nullptr && *env != '\0')
-    return std::filesystem::path(env) / "vehicles.json";
-  return std::filesystem::path(CHATSIM_PROMPTS_DIR) / "vehicles.json";
-}
-
-std::vector<Make> load_makes() {
-  const auto file = vocabulary_file();
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read the vehicle vocabulary " + file.string() +
-                                    " (set CHATSIM_PROMPTS to the agents/prompts folder)");
-  std::vector<Make> out;
-  try {
-    const auto doc = nlohmann::json::parse(in);
-    for (const auto& m : doc.at("makes")) {
-      Make make{m.at("make"), m.at("type"), {}, {}, {}};
-      for (const auto& n : m.at("names")) make.names.push_back(text::words(n.get<std::string>()));
-      // "ambiguous": true (every name) or the list of names that are also ordinary words.
-      const auto amb = m.value("ambiguous", nlohmann::json(false));
-      if (amb.is_boolean() && amb.get<bool>()) make.ambiguous = make.names;
-      if (amb.is_array())
-        for (const auto& n : amb) make.ambiguous.push_back(text::words(n.get<std::string>()));
-      for (const auto& [model, type] : m.at("models").items()) make.models.emplace_back(text::words(model), type);
-      std::stable_sort(make.models.begin(), make.models.end(),
-                       [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
-      out.push_back(std::move(make));
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(file.string() + ": not a vehicle vocabulary (makes[].make, type, names, models): " + e.what());
-  }
-  return out;
-}
-
-const std::vector<Make>& makes() {
-  static const std::vector<Make> m = load_makes();
-  return m;
-}
-
 // The nouns of agents/prompts/nouns.json, longest phrases first so that "police car" wins over
 // "car" and "people carrier" over "people".
 const std::vector<Noun>& nouns() {
@@ -164,42 +124,6 @@ const std::vector<Noun>& nouns() {
     return list;
   }();
   return n;
-}
-
-bool words_at(const std::vector<std::string>& w, size_t at, const std::vector<std::string>& phrase) {
-  if (phrase.empty() || at + phrase.size() > w.size()) return false;
-  for (size_t k = 0; k < phrase.size(); ++k)
-    if (w[at + k] != phrase[k]) return false;
-  return true;
-}
-
-// As words_at, or with the phrase's last word in the plural ("range rovers", "model ys").
-bool words_at_plural(const std::vector<std::string>& w, size_t at, const std::vector<std::string>& phrase) {
-  if (phrase.empty() || at + phrase.size() > w.size()) return false;
-  for (size_t k = 0; k + 1 < phrase.size(); ++k)
-    if (w[at + k] != phrase[k]) return false;
-  const std::string& last = w[at + phrase.size() - 1];
-  return last == phrase.back() + "s" || last == phrase.back() + "es";
-}
-
-bool is_unit_word(const std::string& w) {
-  static const char* kUnits[] = {"m", "meter", "meters", "km", "km/h", "mph", "m/s", "degrees", "degree", "cm", "feet", "ft"};
-  for (const char* u : kUnits)
-    if (w == u) return true;
-  return false;
-}
-
-// The model named right after a make ("x5", "model y", "mx 5"), not a number that is a distance.
-std::optional<std::pair<size_t, std::string>> model_after(const Make& make, const std::vector<std::string>& w, size_t at,
-                                                         bool* plural = nullptr) {
-  for (const auto& [words, type] : make.models) {
-    const bool exact = words_at(w, at, words);
-    if (!exact && !(plural != nullptr && words_at_plural(w, at, words))) continue;
-    if (at + words.size() < w.size() && is_unit_word(w[at + words.size()])) continue;
-    if (plural != nullptr) *plural = !exact;
-    return std::make_pair(words.size(), type);
-  }
-  return std::nullopt;
 }
 
 // At most one edit apart: an insertion, a deletion, a substitution, or a swap of neighbours.
@@ -426,50 +350,11 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
   return out;
 }
 
-std::vector<BrandMention> find_brands(const std::vector<std::string>& w) {
-  std::vector<BrandMention> out;
-  for (size_t at = 0; at < w.size(); ++at) {
-    for (const auto& make : makes()) {
-      size_t n = 0;
-      bool plural = false;
-      const std::vector<std::string>* matched = nullptr;
-      for (const auto& name : make.names)
-        if (words_at(w, at, name) && name.size() > n) {
-          n = name.size();
-          matched = &name;
-        }
-      // "two range rovers": a make's name in the plural, when nothing else matched.
-      if (n == 0)
-        for (const auto& name : make.names)
-          if (name.size() > 1 && words_at_plural(w, at, name)) {
-            n = name.size();
-            matched = &name;
-            plural = true;
-          }
-      if (n == 0) continue;
-      const bool ambiguous = std::find(make.ambiguous.begin(), make.ambiguous.end(), *matched) != make.ambiguous.end();
-      bool model_plural = false;
-      const auto model = plural ? std::nullopt : model_after(make, w, at + n, &model_plural);
-      plural = plural || model_plural;
-      const bool noun_follows = at + n < w.size() && !find_types({w[at + n]}).empty();
-      // A make that is also an ordinary word ("man", "seat") counts only before a model or a noun.
-      if (ambiguous && !model && !noun_follows) continue;
-      if (make.brand == "mini" && at + n < w.size() && (w[at + n] == "van" || w[at + n] == "bus")) continue;
-      std::string said = text::join(*matched);
-      if (said == make.brand || text::join(text::words(make.brand)) == said) said.clear();
-      BrandMention m{make.brand, said, model ? model->second : make.type, at, at + n + (model ? model->first : 0), plural};
-      out.push_back(m);
-      at = m.end - 1;
-      break;
-    }
-  }
-  return out;
-}
-
-std::string make_display_name(const std::string& brand) {
-  for (const auto& make : makes())
-    if (make.brand == brand && !make.names.empty()) return text::join(make.names.front());
-  return brand;
+const std::vector<std::string>& place_of_removed_phrases() {
+  static const std::vector<std::string> kPhrases{
+      "in its place", "in their place", "where it was", "where they were", "in the same place", "there instead",
+      "in the same spot", "in its spot", "in its space", "in its bay", "in its position", "where it used to be"};
+  return kPhrases;
 }
 
 std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {

@@ -26,6 +26,8 @@ struct VehicleType {
   std::string category;      // the scene category an added one gets, e.g. vehicle.emergency.police
   std::string scene_prefix;  // what it selects among labelled objects, e.g. vehicle.truck
   bool living() const { return type == "pedestrian" || type == "animal"; }  // walks: never a vehicle to add
+  // What the asset agent can add: no walker, no tram (labelled in some datasets only), no bare "object".
+  bool addable() const { return !living() && type != "tram" && type != "object"; }
 };
 
 struct TypeMention {
@@ -48,6 +50,8 @@ std::vector<BrandMention> find_brands(const std::vector<std::string>& words);
 // A make's name as people write it ("land rover" for the make "landrover"), or the make itself.
 std::string make_display_name(const std::string& brand);
 
+// "in its place", "where it was", "in its spot": where a vehicle removed (or being removed) stood.
+const std::vector<std::string>& place_of_removed_phrases();
 // Words that name something we cannot select or add (helicopter, plane, ...).
 std::optional<std::string> unsupported_noun(const std::vector<std::string>& words);
 

@@ -35,7 +35,9 @@ namespace {
 bool refers_to_added(const Words& w_in) {
   // "leave the bus where it is": that "it" is the bus, not something added.
   Words w = w_in;
-  for (const char* p : {"where it is", "as it is", "where they are", "as they are", "where it was", "in its place"})
+  std::vector<std::string> phrases{"where it is", "as it is", "where they are", "as they are"};
+  for (const auto& p : lexicon::place_of_removed_phrases()) phrases.push_back(p);
+  for (const auto& p : phrases)
     for (size_t at = text::find_phrase(w, p); at != std::string::npos; at = text::find_phrase(w, p))
       w.erase(w.begin() + long(at), w.begin() + long(at + text::words(p).size()));
   return has_any(w, {"it", "its", "them", "their", "both", "they", "added", "new", "you added", "i added", "we added",
@@ -374,6 +376,21 @@ bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
   if (bad && (types.empty() || text::find_phrase(c, *bad) <= types.front().begin)) {
     in.kind = "unclear";
     in.target = *bad;
+    return true;
+  }
+  // "add a pedestrian pushing a trolley": the first thing named is what is added, and a walker is no
+  // vehicle. In "a horse box trailer" the horse only says what kind of trailer.
+  const auto qualifies_next = [&](const lexicon::TypeMention& t) {
+    return std::any_of(types.begin(), types.end(), [&](const lexicon::TypeMention& v) {
+      return v.begin > t.begin && v.begin <= t.begin + 2 && v.type.addable();
+    });
+  };
+  const auto head = std::find_if(types.begin(), types.end(), [&](const lexicon::TypeMention& t) {
+    return t.type.type != "object" && !qualifies_next(t);
+  });
+  if (head != types.end() && !head->type.addable()) {
+    in.kind = "unclear";
+    in.target = text::join(c, head->begin, head->end);
     return true;
   }
   // "add a black zorblax at the front": a name the vocabulary lacks where a vehicle belongs is a

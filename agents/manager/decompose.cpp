@@ -116,6 +116,14 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
   static const char* fillers[] = {"additionally", "also", "then", "now", "please", "and", "finally", "next", "first",
                                   "lastly", "ok", "okay", "actually", "sorry", "wait", "oh", "hmm", "hey", "hi",
                                   "hello", "so", "um", "uh", "well", "alright"};
+  // "I want the car park to look busy, so could you fill the bays with parked cars": what is asked
+  // follows "so"; what comes before it is why.
+  for (auto& c : out)
+    for (const char* ask : {"so could you", "so can you", "so would you", "so will you", "so please"})
+      if (const size_t at = text::find_phrase(c, ask); at != std::string::npos && at > 0) {
+        c.erase(c.begin(), c.begin() + long(at) + 1);
+        break;
+      }
   for (auto& c : out)
     for (bool again = true; again;) {
       again = false;

@@ -70,30 +70,6 @@ ChatResult Manager::chat(const std::string& id, const std::string& scene_dir, co
   }
 }
 
-namespace {
-
-// "delete the motorbike", then "and the bike in the bus lane too": a round with no verb of its own
-// that goes on from the last one takes that round's verb. Read on its own it names a vehicle and
-// no verb, which is an addition.
-void continue_previous_round(const Conversation& c, const std::string& command, std::vector<Instruction>& instructions) {
-  if (c.rounds.empty() || instructions.size() != 1 || instructions.front().kind != "add") return;
-  const auto w = text::words(command);
-  const bool as_well = w.size() >= 2 && w[w.size() - 2] == "as" && w.back() == "well";
-  const bool goes_on = !w.empty() && (w.front() == "and" || w.front() == "also" || w.front() == "plus" ||
-                                      w.back() == "too" || as_well);
-  const auto& verbs = detail::add_verbs();
-  if (!goes_on || std::any_of(w.begin(), w.end(), [&](const std::string& x) {
-        return std::find(verbs.begin(), verbs.end(), x) != verbs.end();
-      }))
-    return;
-  const auto& last = c.rounds.back().at("instructions");
-  if (last.empty() || !last.back().get<std::string>().starts_with("delete: ")) return;
-  instructions.front().kind = "delete";
-  instructions.front().text = "remove " + instructions.front().text;
-}
-
-}  // namespace
-
 ChatResult Manager::run_round(Conversation& c, const std::string& scene_dir, const std::string& command) {
   c.scene_dir = scene_dir;
   const size_t unresolved_before = c.unresolved.size();
@@ -117,6 +93,10 @@ ChatResult Manager::run_round(Conversation& c, const std::string& scene_dir, con
     };
     return phase(a.kind) < phase(b.kind);
   });
+  if (replaces_last_round(c, trimmed, instructions)) {
+    back_to_round_start(c);
+    round.done.push_back("Replaced round " + std::to_string(c.rounds.size()) + ".");
+  }
   remember_for_undo(c);
   for (const auto& in : instructions) {
     round.instructions.push_back(in.kind + ": " + in.text);
@@ -292,14 +272,15 @@ bool Manager::plan_motion(Conversation& c, AddedVehicle& v, const json& args_in,
 }
 
 bool Manager::add_one(Conversation& c, const json& asset_args, const json& motion_said, const std::string& text,
-                      Round& round, bool strict) {
+                      Round& round, bool strict, const json* group_anchor) {
   const auto asset = call("asset", c, "choose", asset_args);
   if (!asset.ok) throw std::runtime_error("asset agent: " + asset.message);
   const json choice = asset.result["choice"];
   json args{{"intent", motion_said}, {"size_lwh", choice["size_lwh"]}, {"type", choice["type"]},
             {"removed", c.removed}, {"others", others_json(c, -1)}, {"strict", strict}};
   if (motion_said.contains("relative")) {
-    const auto anchor = find_anchor(c, motion_said["relative"].value("to", "it"), -1);
+    const auto anchor = group_anchor != nullptr ? std::optional<json>(*group_anchor)
+                                                : find_anchor(c, motion_said["relative"].value("to", "it"), -1);
     if (!anchor) {
       const std::string to = motion_said["relative"].value("to", "");
       c.unresolved.push_back({{"instruction", text},
@@ -347,8 +328,12 @@ void Manager::do_add(Conversation& c, const Instruction& in, Round& round) {
   if (refused_for_range(c, in.text, decided.result["intent"])) return;
   json args = asset_args;
   args["request"] = probe.result["request"];
+  // "two motorbikes next to the black one": each by the one named, not the second by the first.
+  const json& intent = decided.result["intent"];
+  const auto anchor = count > 1 && intent.contains("relative")
+                          ? find_anchor(c, intent["relative"].value("to", "it"), -1) : std::nullopt;
   for (int k = 0; k < count; ++k)
-    if (!add_one(c, args, decided.result["intent"], in.text, round)) break;
+    if (!add_one(c, args, intent, in.text, round, false, anchor ? &*anchor : nullptr)) break;
 }
 
 void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {

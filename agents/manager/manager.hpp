@@ -85,6 +85,12 @@ class Manager {
   void do_restore(Conversation& c, const Instruction& in, Round& round);
   void do_undo(Conversation& c, const Instruction& in, Round& round);
   void remember_for_undo(Conversation& c);
+  // Back to the state kept newest in c.undo (which it drops), keeping the rounds said and the unresolved.
+  void back_to_round_start(Conversation& c);
+  static void continue_previous_round(const Conversation& c, const std::string& command,
+                                      std::vector<Instruction>& instructions);
+  bool replaces_last_round(const Conversation& c, const std::string& command,
+                           const std::vector<Instruction>& instructions) const;
   void do_add(Conversation& c, const Instruction& in, Round& round);
   void do_revise(Conversation& c, const Instruction& in, Round& round);
   bool replan_revised(Conversation& c, int index, const nlohmann::json& said, const std::string& text);
@@ -96,7 +102,7 @@ class Manager {
   // cannot be planned, an exception when the agent failed.
   bool plan_motion(Conversation& c, AddedVehicle& v, const nlohmann::json& args, const std::string& text);
   bool add_one(Conversation& c, const nlohmann::json& asset_args, const nlohmann::json& motion_args,
-               const std::string& text, Round& round, bool strict = false);
+               const std::string& text, Round& round, bool strict = false, const nlohmann::json* group_anchor = nullptr);
   std::vector<int> resolve(const Conversation& c, const std::string& reference) const;
   // The start of the vehicle a placement is relative to: an added one (not `except`), else a
   // recorded one the deletion agent selects by the same words; nullopt when none matches.

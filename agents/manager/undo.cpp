@@ -20,6 +20,11 @@ void Manager::do_undo(Conversation& c, const Instruction& in, Round& round) {
     c.unresolved.push_back({{"instruction", in.text}, {"reason", "there is no earlier round to undo"}});
     return;
   }
+  back_to_round_start(c);
+  round.done.push_back("Undid round " + std::to_string(c.rounds.size()) + ".");
+}
+
+void Manager::back_to_round_start(Conversation& c) {
   const auto back_to = c.undo.back();
   c.undo.pop_back();
   auto rounds = std::move(c.rounds);
@@ -29,7 +34,6 @@ void Manager::do_undo(Conversation& c, const Instruction& in, Round& round) {
   c.rounds = std::move(rounds);
   c.unresolved = std::move(unresolved);
   c.undo = std::move(undo);
-  round.done.push_back("Undid round " + std::to_string(c.rounds.size()) + ".");
 }
 
 }  // namespace chatsim::agents::manager

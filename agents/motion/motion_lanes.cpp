@@ -43,7 +43,8 @@ std::optional<std::string> find_lane(const Words& w_in) {
   if (has_any(w, {"my lane", "our lane", "same lane", "ego lane", "this lane", "current lane"})) return "ego";
   if (has_any(w, {"oncoming lane", "opposite lane", "other side of the road", "opposing lane", "oncoming traffic lane",
                   "lane of oncoming", "other side", "opposite side", "other carriageway", "opposite carriageway",
-                  "the other way", "opposite direction", "other direction", "far side", "other side of the street"}))
+                  "the other way", "opposite direction", "other direction", "opposite way", "far side",
+                  "other side of the street"}))
     return "oncoming";
   if (has_any(w, {"side street", "side road", "cross street", "side streets", "crossroad", "cross road", "side lane",
                   "farm track", "dirt track", "dirt road", "track", "alley", "alleyway", "driveway", "slip lane"}))

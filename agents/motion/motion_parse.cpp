@@ -29,7 +29,8 @@ std::optional<RelativePlacement> find_relative(Words& w) {
   };
   static const Pattern patterns[] = {
       {"in front of", "front", false}, {"to the front of", "front", false}, {"at the front of", "front", false},
-      {"ahead of", "front", false},    {"just ahead of", "front", false},   {"chasing behind", "back", true},
+      {"ahead of", "front", false},    {"just ahead of", "front", false},   {"past", "front", false},
+      {"beyond", "front", false},      {"further on than", "front", false}, {"chasing behind", "back", true},
       {"following behind", "back", true}, {"behind", "back", false},       {"chasing after", "back", true},
       {"chasing", "back", true},       {"following", "back", true},         {"chases", "back", true},
       {"follows", "back", true},       {"tailing", "back", true},           {"after", "back", false},
@@ -86,8 +87,7 @@ std::optional<RelativePlacement> find_relative(Words& w) {
 // "in its place", "where the truck was", "instead of the bus": at the start of a vehicle that
 // was (or is being) removed; "removed" stands for the last one removed.
 std::optional<RelativePlacement> find_place_of(Words& w) {
-  for (const char* p : {"in its place", "in their place", "where it was", "where they were", "in the same place",
-                        "there instead", "in the same spot", "in its spot", "where it used to be"}) {
+  for (const auto& p : lexicon::place_of_removed_phrases()) {
     const size_t at = find_phrase(w, p);
     if (at == std::string::npos) continue;
     for (size_t k = 0; k < text::words(p).size(); ++k) w[at + k] = "_";
@@ -300,7 +300,10 @@ void find_direction(const Words& w, MotionIntent& m) {
   const bool comes_my_way = has_any(w, {"coming my way", "comes my way", "come my way", "coming our way",
                                         "comes our way", "heading my way", "headed my way", "heading our way"});
   // "the same direction as me": the ego's way; ahead of the ego that is away from it.
-  if (comes_my_way)
+  // "coming up behind us", "catching up with me": from behind, toward the ego.
+  const bool closes_in = has_any(w, {"coming up behind", "comes up behind", "come up behind", "catching up",
+                                     "catches up", "catch up", "closing in", "closes in", "gaining on", "creeping up"});
+  if (comes_my_way || closes_in)
     m.direction = "toward";
   else if (has_any(w, {"same direction as me", "same direction as us", "same way as me", "same way as us",
                   "in the same direction", "the way i am going", "my way", "same direction", "same way",
@@ -374,6 +377,9 @@ MotionIntent parse_motion(const std::string& instruction) {
   if (has_any(w, {"close front", "close to me", "near me", "nearby", "right in front", "just ahead", "close behind",
                   "close", "near"}))
     m.distance_word = "close";
+  else if (has_any(w, {"far end", "other end", "end of the road", "end of the street", "end of the aisle",
+                       "end of the lane", "end of the car park", "end of the block"}))
+    m.distance_word = "end";  // as far up the road as it is seen
   else if (has_any(w, {"far ahead", "far away", "in the distance", "far", "distant"}))
     m.distance_word = "far";
   m.action = change_to ? change_to : find_action(w);

@@ -31,6 +31,11 @@ Region region_for(const std::string& placement, const MotionIntent& m, double wi
   }
   if (m.distance_word == "close") d_default = side ? 3.5 : 9;
   if (m.distance_word == "far") d_default = side ? 8 : 40;
+  if (m.distance_word == "end" && !side) {
+    d_default = 80;
+    r.d_min = 50;
+    r.d_max = 130;
+  }
   // "on the right, 20 m ahead": a side lane far ahead is only a few degrees off the axis; so is
   // a side street some way up the road.
   const bool far_side = m.distance_m || m.lane == "cross";
@@ -384,6 +389,8 @@ std::vector<Candidate> Planner::relative_candidates() const {
       Candidate c{lane, s, dir, parked, gap - base_gap};
       out.push_back(c);
     }
+  } else if (std::abs(std::sin(wrap(a.start.yaw - scene_.lanes.tangent_yaw_at(lane, s0)))) > 0.7) {
+    beside_in_row(lane, s0, dir, region == "left" ? 1 : -1, out);
   } else {
     const double side = region == "left" ? 1 : -1;
     const Eigen::Vector2d left(-std::sin(a.start.yaw), std::cos(a.start.yaw));
@@ -410,6 +417,24 @@ std::vector<Candidate> Planner::relative_candidates() const {
     if (!ds) c.dir = -c.dir;
   }
   return out;
+}
+
+// Beside an anchor standing across its lane (a bay of a row of perpendicular parking): along the
+// row, on its `side` (+1 its left) first, then on the other ("next to the motorbike" says no side).
+void Planner::beside_in_row(int lane, double s0, int dir, int side, std::vector<Candidate>& out) const {
+  const Anchor& a = *req_.anchor;
+  const double tangent = scene_.lanes.tangent_yaw_at(lane, s0);
+  const double left_along = -std::sin(a.start.yaw) * std::cos(tangent) + std::cos(a.start.yaw) * std::sin(tangent);
+  const double gap = (a.size_lwh.y() + req_.size_lwh.y()) / 2 + 0.8;
+  const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
+                      (a.speed_mps < 0.5 && nothing_said_about_motion());
+  for (int pass = 0; pass < 2; ++pass) {
+    const double k = (pass == 0 ? side : -side) * (left_along >= 0 ? 1 : -1);
+    for (double extra = 0; extra < 15; extra += 0.5) {
+      const double s = s0 + k * (gap + extra);
+      if (s >= 0 && s <= scene_.lanes.lanes()[size_t(lane)].length()) out.push_back({lane, s, dir, parked, extra + 5.0 * pass});
+    }
+  }
 }
 
 // Whether a driving lane of the ego's way runs one lane width to `side` (+1 left) of `lane`,

@@ -119,6 +119,7 @@ class Planner {
   Region search_region(const std::string& placement, double widen) const;
   void place_by_junction(const std::string& placement, double widen, Region& region) const;
   std::vector<Candidate> relative_candidates() const;
+  void beside_in_row(int lane, double s0, int dir, int side, std::vector<Candidate>& out) const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
   Evaluated evaluate_at(const Candidate& c, double speed) const;

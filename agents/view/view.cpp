@@ -195,6 +195,13 @@ ViewChange parse_view(const std::string& instruction) {
       name && name->begin >= 2 && w[name->begin - 1] == "the" &&
       text::has_any({w[name->begin - 2]}, {"to", "into", "in", "onto", "from"}))
     v.to_lane = name->use;
+  // "forward to the cross street", "up to the junction": as far as the first junction ahead.
+  if (!v.translation_m || (*v.translation_m)[0] == 0)
+    for (const char* to : {"to the", "up to the", "as far as the", "into the"})
+      for (const char* place : {"junction", "crossing", "intersection", "crossroads", "cross street", "cross road",
+                                "cross aisle", "side street", "side road", "corner", "turn off", "turnoff"})
+        if (text::has_any(w, {std::string(to) + " " + place}) && !text::has_any(w, {"lane", "lanes"}))
+          v.to_junction = true;
   // The kerb's side is the road's to say: the sideways part said by it waits for the scene.
   if (v.translation_m && (*v.translation_m)[1] != 0 &&
       text::has_any(w, {"curb", "sidewalk", "pavement", "middle of the road", "center of the road", "center line"})) {
@@ -232,6 +239,7 @@ nlohmann::json to_json(const ViewChange& v) {
   util::put_optional(j, "ego_motion", v.ego_motion);
   util::put_optional(j, "toward_kerb_m", v.toward_kerb_m);
   util::put_optional(j, "to_lane", v.to_lane);
+  if (v.to_junction) j["to_junction"] = true;
   if (v.reset) j["reset"] = true;
   return j;
 }
@@ -245,6 +253,7 @@ ViewChange view_change_from_json(const nlohmann::json& j) {
   util::get_optional(j, "ego_motion", v.ego_motion);
   util::get_optional(j, "toward_kerb_m", v.toward_kerb_m);
   util::get_optional(j, "to_lane", v.to_lane);
+  v.to_junction = j.value("to_junction", false);
   v.reset = j.value("reset", false);
   return v;
 }
@@ -317,6 +326,15 @@ ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, doub
     if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
     (*change.translation_m)[1] += (keeps_left(scene) ? 1 : -1) * *change.toward_kerb_m;
     change.toward_kerb_m.reset();
+  }
+  if (change.to_junction && !scene.frames.empty()) {
+    const auto& pose = scene.frames.front().ego_to_world;
+    const double yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+    if (const auto span = scene.lanes.junction_ahead(pose.translation().head<2>(), yaw)) {
+      if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
+      (*change.translation_m)[0] = (span->from + span->to) / 2;
+      change.to_junction = false;
+    }
   }
   if (change.to_lane) {
     // The fast lane is next to the other way's traffic: on the right where traffic keeps left.

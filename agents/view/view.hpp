@@ -25,6 +25,9 @@ struct ViewChange {
   // "move the camera over to the oncoming lane": left, right, oncoming or parking, a lane of the
   // scene's map whose centre the view moves sideways to (resolve_road_sides).
   std::optional<std::string> to_lane;
+  // "move the camera forward to the junction": ahead to the middle of the first junction on the
+  // ego's lane (resolve_road_sides).
+  bool to_junction = false;
   bool reset = false;
 };
 ViewChange parse_view(const std::string& instruction);

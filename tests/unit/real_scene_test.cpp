@@ -62,6 +62,8 @@ std::string car_park_scene() {
       parked("grey_car", "vehicle.car", {130, 130, 135}, {4.5, 1.8, 1.5}, {-4, -10, 0.75}, 0),
       parked("bicycle", "vehicle.bicycle", {60, 60, 60}, {1.8, 0.6, 1.1}, {14, 12, 0.5}, 0),
       parked("bus", "vehicle.bus.rigid", {200, 200, 200}, {12, 2.9, 3.4}, {-25, 12, 1.7}, 0),
+      // Seen from frame 60 only, 8 m from the ego then, 21 m from where the clip starts.
+      parked("late_white_car", "vehicle.car", {230, 230, 230}, {4.5, 1.8, 1.5}, {20, -8, 0.75}, 60),
   };
   std::vector<Lane> lanes;
   lanes.push_back({"ego_lane", "driving", 3.5, bent_road(0), TrafficDirection::Forward, {}});
@@ -132,7 +134,7 @@ TEST_F(RealScene, KeepingSomeOfWhatWasDeletedPutsThemBack) {
 }
 
 TEST_F(RealScene, EmptyingAndTwoWheelsSayWhatGoes) {
-  EXPECT_EQ(removed(chat("a", "Empty the whole scene of vehicles.")).size(), 7u);
+  EXPECT_EQ(removed(chat("a", "Empty the whole scene of vehicles.")).size(), 8u);
   EXPECT_EQ(removed(chat("b", "clear the scene of motorbikes")),
             (std::vector<std::string>{"late_moto_black", "late_moto_grey"}));
   EXPECT_EQ(removed(chat("c", "remove everything on two wheels")),
@@ -156,4 +158,11 @@ TEST_F(RealScene, ComingMyWayAndFollowingMeAreDirectionsAndPlaces) {
 TEST_F(RealScene, AVehicleNounTypedWithADoubledLetterIsTheNoun) {
   // "buss" is in English word lists (a kiss), so the edit-distance typo fix leaves it alone.
   EXPECT_EQ(removed(chat("a", "remve the buss")), (std::vector<std::string>{"bus"}));
+}
+
+TEST_F(RealScene, NearestComparesDistancesAtOneTime) {
+  // The late car is nearer the ego when it comes into view than the grey car is at the start, but
+  // "nearest" compares them all from where the clip starts, as the user sees it.
+  EXPECT_EQ(removed(chat("a", "delete the nearest car on my right")), (std::vector<std::string>{"grey_car"}));
+  EXPECT_EQ(removed(chat("a", "and the next one along")), (std::vector<std::string>{"grey_car", "late_black_car"}));
 }

@@ -1,0 +1,65 @@
+// How a round goes on from the last one: it takes its verb ("and the yellow one") or replaces it
+// ("no, delete the truck instead").
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "agents/language/text.hpp"
+#include "agents/manager/classify.hpp"
+#include "agents/manager/manager.hpp"
+
+namespace chatsim::agents::manager {
+
+// "delete the motorbike", then "and the bike in the bus lane too": a round with no verb of its own
+// that goes on from the last one takes that round's verb. Read on its own it names a vehicle and
+// no verb, which is an addition; "and the yellow one" names none and is not understood.
+// "and the next one (along)" repeats the last deletion: what it picked is gone, so the same words
+// pick the next.
+void Manager::continue_previous_round(const Conversation& c, const std::string& command, std::vector<Instruction>& instructions) {
+  if (c.rounds.empty() || instructions.size() != 1) return;
+  if (instructions.front().kind != "add" && instructions.front().kind != "unclear") return;
+  auto w = text::words(command);
+  const bool as_well = w.size() >= 2 && w[w.size() - 2] == "as" && w.back() == "well";
+  const bool goes_on = !w.empty() && (w.front() == "and" || w.front() == "also" || w.front() == "plus" ||
+                                      w.back() == "too" || as_well);
+  const auto& verbs = detail::add_verbs();
+  if (!goes_on || std::any_of(w.begin(), w.end(), [&](const std::string& x) {
+        return std::find(verbs.begin(), verbs.end(), x) != verbs.end();
+      }))
+    return;
+  const auto& last = c.rounds.back().at("instructions");
+  if (last.empty() || !last.back().get<std::string>().starts_with("delete: ")) return;
+  instructions.front().kind = "delete";
+  std::erase_if(w, [](const std::string& x) { return x == "and" || x == "also" || x == "plus" || x == "too"; });
+  if (text::find_phrase(w, "next one") != std::string::npos || text::find_phrase(w, "one more") != std::string::npos)
+    instructions.front().text = last.back().get<std::string>().substr(8);
+  else
+    instructions.front().text = "remove " + instructions.front().text;
+}
+
+// "delete the bus", then "no, delete the truck instead": a round that corrects the last one
+// (it opens with "no" or "actually" and says "instead" or "I meant") and does the same kind of
+// thing, a deletion or a view, replaces it rather than adding to it. Additions have their own
+// corrections (a new colour, make or place revises the vehicle).
+bool Manager::replaces_last_round(const Conversation& c, const std::string& command,
+                                  const std::vector<Instruction>& instructions) const {
+  if (c.rounds.empty() || c.undo.empty() || instructions.empty()) return false;
+  const auto w = text::words(command);
+  const bool opens = !w.empty() && (w.front() == "no" || w.front() == "nope" || w.front() == "actually" ||
+                                    w.front() == "sorry" || w.front() == "oops");
+  const bool corrects = std::find(w.begin(), w.end(), "instead") != w.end() ||
+                        text::find_phrase(w, "i meant") != std::string::npos ||
+                        text::find_phrase(w, "i mean") != std::string::npos;
+  if (!opens || !corrects) return false;
+  const std::string kind = instructions.front().kind;
+  if (kind != "delete" && kind != "view") return false;
+  const auto same = [&](const std::string& k) { return k == kind; };
+  if (!std::all_of(instructions.begin(), instructions.end(), [&](const Instruction& in) { return same(in.kind); }))
+    return false;
+  const auto& last = c.rounds.back().at("instructions");
+  return !last.empty() && std::all_of(last.begin(), last.end(), [&](const nlohmann::json& x) {
+    return x.get<std::string>().starts_with(kind + ": ");
+  });
+}
+
+}  // namespace chatsim::agents::manager
