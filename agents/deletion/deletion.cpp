@@ -91,8 +91,8 @@ std::optional<std::string> lane_words(const Words& p) {
   if (text::has_any(p, {"left lane", "left hand lane"})) return "left";
   if (text::has_any(p, {"right lane", "right hand lane"})) return "right";
   if (text::has_any(p, {"oncoming", "other carriageway", "opposite carriageway", "opposite direction",
-                        "other direction", "the other way", "opposite way", "coming toward", "toward me", "toward us", "coming at me",
-                        "coming at us"}))
+                        "other direction", "the other way", "opposite way", "coming toward", "toward me", "toward us",
+                        "coming at me", "coming at us"}))
     return "oncoming";
   // "at the crossing" is a place; "the person crossing the road" says what the person does.
   if (text::has_any(p, {"side street", "side road", "cross street", "crossroads", "junction", "intersection",

@@ -41,7 +41,8 @@ std::vector<Make> load_makes() {
       out.push_back(std::move(make));
     }
   } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(file.string() + ": not a vehicle vocabulary (makes[].make, type, names, models): " + e.what());
+    throw std::runtime_error(file.string() + ": not a vehicle vocabulary (makes[].make, type, names, models): " +
+                             e.what());
   }
   return out;
 }
@@ -67,7 +68,8 @@ bool words_at_plural(const std::vector<std::string>& w, size_t at, const std::ve
 }
 
 bool is_unit_word(const std::string& w) {
-  static const char* kUnits[] = {"m", "meter", "meters", "km", "km/h", "mph", "m/s", "degrees", "degree", "cm", "feet", "ft"};
+  static const char* kUnits[] = {"m",   "meter",   "meters",  "km",     "km/h", "mph",
+                                 "m/s", "degrees", "degree", "cm", "feet", "ft"};
   for (const char* u : kUnits)
     if (w == u) return true;
   return false;
@@ -84,8 +86,8 @@ using detail::is_unit_word;
 using detail::words_at_plural;
 
 // The model named right after a make ("x5", "model y", "mx 5"), not a number that is a distance.
-std::optional<std::pair<size_t, std::string>> model_after(const Make& make, const std::vector<std::string>& w, size_t at,
-                                                         bool* plural = nullptr) {
+std::optional<std::pair<size_t, std::string>> model_after(const Make& make, const std::vector<std::string>& w,
+                                                         size_t at, bool* plural = nullptr) {
   for (const auto& [words, type] : make.models) {
     const bool exact = words_at(w, at, words);
     if (!exact && !(plural != nullptr && words_at_plural(w, at, words))) continue;
@@ -188,7 +190,8 @@ std::vector<BrandMention> find_brands(const std::vector<std::string>& w) {
       if (make.brand == "mini" && at + n < w.size() && (w[at + n] == "van" || w[at + n] == "bus")) continue;
       std::string said = text::join(*matched);
       if (said == make.brand || text::join(text::words(make.brand)) == said) said.clear();
-      BrandMention m{make.brand, said, model ? model->second : make.type, at, at + n + (model ? model->first : 0), plural};
+      const size_t end = at + n + (model ? model->first : 0);
+      BrandMention m{make.brand, said, model ? model->second : make.type, at, end, plural};
       out.push_back(m);
       at = m.end - 1;
       break;

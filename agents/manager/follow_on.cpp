@@ -15,7 +15,8 @@ namespace chatsim::agents::manager {
 // no verb, which is an addition; "and the yellow one" names none and is not understood.
 // "and the next one (along)" repeats the last deletion: what it picked is gone, so the same words
 // pick the next.
-void Manager::continue_previous_round(const Conversation& c, const std::string& command, std::vector<Instruction>& instructions) {
+void Manager::continue_previous_round(const Conversation& c, const std::string& command,
+                                      std::vector<Instruction>& instructions) {
   if (c.rounds.empty() || instructions.size() != 1) return;
   if (instructions.front().kind != "add" && instructions.front().kind != "unclear") return;
   auto w = text::words(command);

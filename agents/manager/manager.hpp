@@ -102,7 +102,8 @@ class Manager {
   // cannot be planned, an exception when the agent failed.
   bool plan_motion(Conversation& c, AddedVehicle& v, const nlohmann::json& args, const std::string& text);
   bool add_one(Conversation& c, const nlohmann::json& asset_args, const nlohmann::json& motion_args,
-               const std::string& text, Round& round, bool strict = false, const nlohmann::json* group_anchor = nullptr);
+               const std::string& text, Round& round, bool strict = false,
+               const nlohmann::json* group_anchor = nullptr);
   std::vector<int> resolve(const Conversation& c, const std::string& reference) const;
   // The start of the vehicle a placement is relative to: an added one (not `except`), else a
   // recorded one the deletion agent selects by the same words; nullopt when none matches.

@@ -432,7 +432,8 @@ void Planner::beside_in_row(int lane, double s0, int dir, int side, std::vector<
     const double k = (pass == 0 ? side : -side) * (left_along >= 0 ? 1 : -1);
     for (double extra = 0; extra < 15; extra += 0.5) {
       const double s = s0 + k * (gap + extra);
-      if (s >= 0 && s <= scene_.lanes.lanes()[size_t(lane)].length()) out.push_back({lane, s, dir, parked, extra + 5.0 * pass});
+      if (s >= 0 && s <= scene_.lanes.lanes()[size_t(lane)].length())
+        out.push_back({lane, s, dir, parked, extra + 5.0 * pass});
     }
   }
 }

@@ -152,7 +152,8 @@ TEST(Commands, BlindSetOnARealRecordingKeepsItsScore) {
     const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file, dir);
     EXPECT_EQ(s.total, size) << file;
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
-    EXPECT_EQ(s.overlapping, 0) << file << ": " << s.overlapping << " of " << s.vehicles << " added vehicles meet another";
+    EXPECT_EQ(s.overlapping, 0) << file << ": " << s.overlapping << " of " << s.vehicles
+                                << " added vehicles meet another";
   }
   fs::remove_all(dir);
 }

@@ -91,7 +91,8 @@ TEST(TrafficState, PlacesPastAVehicleAtTheFarEndAndBesideABay) {
 
 TEST(TrafficState, TheViewMovesToTheJunctionAheadOrSaysThereIsNone) {
   LayoutChat park("blind-carpark");
-  EXPECT_NEAR(park("a", "move the camera forward to the cross aisle")["view"]["translation_m"][0].get<double>(), 80.0, 3.0);
+  const auto view = park("a", "move the camera forward to the cross aisle")["view"];
+  EXPECT_NEAR(view["translation_m"][0].get<double>(), 80.0, 3.0);
   LayoutChat ramp("blind-onramp");
   const auto state = ramp("a", "move the camera up to the junction");
   ASSERT_EQ(state["unresolved"].size(), 1u);
@@ -100,7 +101,8 @@ TEST(TrafficState, TheViewMovesToTheJunctionAheadOrSaysThereIsNone) {
 
 TEST(TrafficState, APoliteRequestAfterSoIsWhatIsAsked) {
   LayoutChat park("blind-carpark");
-  const auto added = park("a", "I want it to look busy, so could you fill the empty bays on the right with parked cars")["added"];
+  const auto added =
+      park("a", "I want it to look busy, so could you fill the empty bays on the right with parked cars")["added"];
   ASSERT_GE(added.size(), 3u);
   for (const auto& v : added) EXPECT_EQ(v["intent"]["action"], "static") << v["intent"];
 }
