@@ -1,4 +1,5 @@
 // chatsim eval commands: grade the decision pipeline on command cases (JSON lines).
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -27,6 +28,7 @@ struct EvalArgs {
   std::string backend;
   std::string out;
   std::string chart;
+  int repeat = 1;
   bool verbose = false;
 };
 
@@ -78,29 +80,49 @@ struct Tally {
   bench::MotionQuality motion;
 };
 
+// Times each round of a case: the median of `repeat` runs of the whole conversation (a single
+// round here varies up to 2x from run to run). The state is the last run's; decisions are
+// deterministic, so every run gives the same one.
+std::vector<double> time_rounds(agents::manager::Manager& manager, const Case& c, int repeat, json& state,
+                                std::string& error_text) {
+  std::vector<std::vector<double>> ms_of(c.rounds.size());
+  for (int rep = 0; rep < repeat && error_text.empty(); ++rep) {
+    for (size_t i = 0; i < c.rounds.size() && error_text.empty(); ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      try {
+        state = manager.chat(c.id, c.scene, c.rounds[i]).edit_state;
+      } catch (const std::exception& e) {
+        error_text = std::string("round failed: ") + e.what();
+      }
+      ms_of[i].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    manager.reset(c.id);
+  }
+  std::vector<double> out;
+  for (auto& v : ms_of) {
+    if (v.empty()) break;
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    out.push_back(v[v.size() / 2]);
+  }
+  return out;
+}
+
 // Sends one case's rounds through the manager and grades the final edit state.
-void run_case(agents::manager::Manager& manager, const scene::Scene& scene, const Case& c, bool verbose, Tally& t) {
+void run_case(agents::manager::Manager& manager, const scene::Scene& scene, const Case& c, const EvalArgs& a,
+              Tally& t) {
   json state;
   std::string error_text;
-  for (const auto& r : c.rounds) {
-    const auto t0 = std::chrono::steady_clock::now();
-    try {
-      state = manager.chat(c.id, c.scene, r).edit_state;
-    } catch (const std::exception& e) {
-      error_text = std::string("round failed: ") + e.what();
-    }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const auto times = time_rounds(manager, c, a.repeat, state, error_text);
+  for (size_t i = 0; i < times.size(); ++i) {
+    const double ms = times[i];
     t.total_ms += ms;
     ++t.rounds;
     t.latency_by_category[c.category].first += ms;
     t.latency_by_category[c.category].second++;
     t.max_ms_by_category[c.category] = std::max(t.max_ms_by_category[c.category], ms);
     const double target = c.category == "abstract" ? 300 : 50;
-    if (ms > target)
-      t.slow_rounds.push_back({{"id", c.id}, {"round", &r - c.rounds.data() + 1}, {"ms", ms}, {"target_ms", target}});
-    if (!error_text.empty()) break;
+    if (ms > target) t.slow_rounds.push_back({{"id", c.id}, {"round", i + 1}, {"ms", ms}, {"target_ms", target}});
   }
-  manager.reset(c.id);
   const bool error = !error_text.empty();
   json case_fail = json::array();
   if (error) case_fail.push_back({{"check", "run"}, {"detail", error_text}});
@@ -125,7 +147,7 @@ void run_case(agents::manager::Manager& manager, const scene::Scene& scene, cons
   if (!ok)  // what the system said it could not do explains most failures
     t.failures.push_back({{"id", c.id}, {"scene", scene.name}, {"rounds", c.rounds}, {"failed", case_fail},
                           {"unresolved", unresolved}});
-  if (verbose)
+  if (a.verbose)
     std::cerr << (ok ? "pass " : "FAIL ") << c.id
               << (ok ? "" : "  " + case_fail.dump() + "  unresolved: " + unresolved.dump()) << "\n";
 }
@@ -153,6 +175,7 @@ json make_report(const EvalArgs& a, const std::string& backend, size_t cases, co
               {"by_scene", by_scene},
               {"by_backend", {{backend, share(t.passed, int(cases))}}},
               {"mean_decision_latency_ms", t.rounds ? t.total_ms / t.rounds : 0.0},
+              {"timed_by", a.repeat > 1 ? "median of " + std::to_string(a.repeat) + " runs per round" : "one run"},
               {"motion", {{"vehicles", t.motion.vehicles}, {"on_lane", share(t.motion.on_lane, t.motion.vehicles)},
                           {"action_match", share(t.motion.action_match, t.motion.vehicles)},
                           {"speed_match", share(t.motion.speed_match, t.motion.vehicles)},
@@ -188,7 +211,7 @@ int run_eval(const EvalArgs& a) {
     std::shared_ptr<agents::llm::Backend> backend = agents::llm::make_backend(a.backend);
     agents::manager::Manager manager(agents::local_caller(backend), backend);
     Tally tally;
-    for (const auto& c : cases) run_case(manager, scenes.at(c.scene), c, a.verbose, tally);
+    for (const auto& c : cases) run_case(manager, scenes.at(c.scene), c, a, tally);
     const json report = make_report(a, backend->name(), cases.size(), scene_names, tally);
     std::cout << report.dump(1) << std::endl;
     if (!a.chart.empty()) draw_chart(a, report);
@@ -222,6 +245,9 @@ void add_eval_command(CLI::App& app, int& result) {
   cmd->add_option("--backend", args->backend, "LLM backend (default: $CHATSIM_LLM or offline)");
   cmd->add_option("--out", args->out, "also write the report here (e.g. bench/results/commands-dev.json)");
   cmd->add_option("--chart", args->chart, "also draw accuracy against latency per category as a PNG");
+  cmd->add_option("--repeat", args->repeat,
+                  "run each case this many times and time each round by its median (default: 1)")
+      ->check(CLI::Range(1, 100));
   cmd->add_flag("--verbose,-v", args->verbose, "print each case's result to stderr");
   cmd->callback([args, &result] { result = run_eval(*args); });
 }

@@ -71,7 +71,8 @@ TEST(Plan, SceneInfoSummarises) {
   EXPECT_NE(text.find("vehicle.car: 6"), std::string::npos) << text;
 }
 
-// eval commands reports each category's slowest round and every round over #41's targets.
+// eval commands reports each category's slowest round and every round over #41's targets; with
+// --repeat, each round timed by its median over the runs, and the same grades.
 TEST(Plan, EvalCommandsReportsTheSlowestRoundAndRoundsOverTheTargets) {
   const auto cases = fs::path(CHATSIM_SOURCE_DIR) / "tests/data/commands-blind-v15.jsonl";
   const auto two = test_support::temp_path("two-cases.jsonl");
@@ -85,14 +86,22 @@ TEST(Plan, EvalCommandsReportsTheSlowestRoundAndRoundsOverTheTargets) {
       o << j.dump() << "\n";
     }
   }
-  const auto out = test_support::temp_path("eval-out.json");
-  ScopedProcess proc(test_support::spawn(
-      {"/bin/sh", "-c", bin("chatsim") + " eval commands --cases " + two.string() + " > " + out.string() + " 2>/dev/null"},
-      "/dev/null"));
-  const auto status = proc.wait(60s);
-  ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0);
-  const auto report = nlohmann::json::parse(test_support::read_file(out));
+  const auto eval = [&](const std::string& extra) {
+    const auto out = test_support::temp_path("eval-out.json");
+    ScopedProcess proc(test_support::spawn({"/bin/sh", "-c", bin("chatsim") + " eval commands --cases " + two.string() +
+                                                                 extra + " > " + out.string() + " 2>/dev/null"},
+                                           "/dev/null"));
+    const auto status = proc.wait(60s);
+    EXPECT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << extra;
+    return nlohmann::json::parse(test_support::read_file(out));
+  };
+  const auto report = eval("");
   EXPECT_EQ(report["cases"], 2);
+  EXPECT_EQ(report["timed_by"], "one run");
+  const auto repeated = eval(" --repeat 3");
+  EXPECT_EQ(repeated["timed_by"], "median of 3 runs per round");
+  EXPECT_EQ(repeated["passed"], report["passed"]);
+  EXPECT_EQ(repeated["failures"], report["failures"]);
   for (const auto& [name, category] : report["by_category"].items()) {
     EXPECT_GE(category["max_decision_latency_ms"].get<double>(), category["mean_decision_latency_ms"].get<double>()) << name;
   }
