@@ -52,8 +52,8 @@ class ViewAgent : public DecisionAgent {
       const json said = decide(call.args.at("instruction").get<std::string>());
       auto change = view::view_change_from_json(said);
       const auto current = view::view_state_from_json(call.args.value("view", json::object()));
-      if (change.toward_kerb_m || change.to_lane || change.to_junction)
-        change = view::resolve_road_sides(change, *cached_scene(call.scene), current.translation_m[1]);
+      if (change.needs_map())
+        change = view::resolve_on_map(change, *cached_scene(call.scene), current.translation_m[1]);
       if (change.to_lane)
         return AgentOutcome::failure(ErrorKind::BadRequest, "the map has no " + *change.to_lane +
                                                                 " lane beside the ego to move the view to");

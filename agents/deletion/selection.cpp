@@ -198,7 +198,10 @@ bool reverses(const scene::ObjectTrack& o, double frame_rate_hz) {
 // The object as the user sees it: at frame 0 when it is there, else where it comes into view
 // (a real recording labels a car only once a sensor sees it), placed relative to the ego then,
 // as the video shows it. Speed over the part of the clip it is seen in.
-std::optional<Candidate> candidate_of(const scene::Scene& scene, const scene::ObjectTrack& o) {
+// `from_start`: world to the ego at frame 0; `reversing`: whether any selector asks (a pass over the
+// whole track, per object, per selection).
+std::optional<Candidate> candidate_of(const scene::Scene& scene, const scene::ObjectTrack& o,
+                                      const Eigen::Isometry3d& from_start, bool reversing) {
   if (o.track.empty() || scene.frames.empty()) return std::nullopt;
   const int first = std::max(0, o.track.front().frame);
   if (size_t(first) >= scene.frames.size()) return std::nullopt;
@@ -212,9 +215,9 @@ std::optional<Candidate> candidate_of(const scene::Scene& scene, const scene::Ob
     if (dt > 0) speed = (o.track.back().center - p0->center).head<2>().norm() / dt;
   }
   const double ego_turn = std::atan2(to_ego.linear()(1, 0), to_ego.linear()(0, 0));
-  const double d0 = (scene.frames.front().ego_to_world.inverse() * p0->center).head<2>().norm();
+  const double d0 = (from_start * p0->center).head<2>().norm();
   return Candidate{&o, (to_ego * p0->center).head<2>(), speed, lane_relation(scene, p0->center.head<2>()),
-                   p0->yaw + ego_turn, reverses(o, scene.frame_rate_hz), d0};
+                   p0->yaw + ego_turn, reversing && reverses(o, scene.frame_rate_hz), d0};
 }
 
 }  // namespace
@@ -226,9 +229,15 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     return out;
   }
   std::vector<Candidate> cands;
+  const auto asks_reversing = [](const std::vector<Selector>& v) {
+    return std::any_of(v.begin(), v.end(), [](const Selector& s) { return s.reversing; });
+  };
+  const bool reversing = asks_reversing(r.targets) || asks_reversing(r.except);
+  const Eigen::Isometry3d from_start =
+      scene.frames.empty() ? Eigen::Isometry3d::Identity() : scene.frames.front().ego_to_world.inverse();
   for (const auto& o : scene.objects)
     if (std::find(removed.begin(), removed.end(), o.id) == removed.end())
-      if (auto c = candidate_of(scene, o)) cands.push_back(*c);
+      if (auto c = candidate_of(scene, o, from_start, reversing)) cands.push_back(*c);
   std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.d0 < b.d0; });
   std::vector<std::string> chosen;
   const Candidate* last = nullptr;  // what the phrase before chose ("... and the truck behind it")

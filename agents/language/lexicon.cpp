@@ -91,7 +91,6 @@ struct Noun {
   std::vector<std::string> words;  // the phrase split once, at load: find_types runs per clause
 };
 
-
 // The nouns of agents/prompts/nouns.json, longest phrases first so that "police car" wins over
 // "car" and "people carrier" over "people".
 const std::vector<Noun>& nouns() {
@@ -219,10 +218,8 @@ bool is_english_word(const std::string& w) { return english_words().contains(w);
 
 std::optional<std::pair<size_t, size_t>> unknown_vehicle_name(const std::vector<std::string>& w, size_t from) {
   if (english_words().empty()) return std::nullopt;
-  static const char* kBefore[] = {"a", "an", "the", "another", "some", "new", "old", "big", "small", "little", "dark",
-                                  "light", "bright", "shiny", "brand"};
   size_t i = from;
-  while (i < w.size() && (std::any_of(std::begin(kBefore), std::end(kBefore), [&](const char* b) { return w[i] == b; }) ||
+  while (i < w.size() && (detail::is_vehicle_determiner(w[i]) || detail::is_vehicle_premodifier(w[i]) ||
                           is_color_word(w[i]) || text::is_number_word(w[i])))
     ++i;
   const auto unknown = [&](const std::string& x) {

@@ -75,6 +75,16 @@ bool is_unit_word(const std::string& w) {
   return false;
 }
 
+bool is_vehicle_determiner(const std::string& w) {
+  return w == "a" || w == "an" || w == "the" || w == "another" || w == "some";
+}
+
+bool is_vehicle_premodifier(const std::string& w) {
+  static const char* kWords[] = {"new",  "old",   "big",    "small", "little", "dark",
+                                 "light", "bright", "shiny", "brand", "second"};
+  return std::any_of(std::begin(kWords), std::end(kWords), [&](const char* k) { return w == k; });
+}
+
 }  // namespace detail
 
 namespace {
@@ -134,14 +144,10 @@ const std::vector<ModelEntry>& distinct_models() {
 // ("transit", "escape") must end its noun phrase: "the escape lane" names no Ford.
 std::optional<BrandMention> model_alone(const std::vector<std::string>& w, size_t at) {
   size_t before = at;
-  while (before > 0 && (is_color_word(w[before - 1]) ||
-                        text::has_any({w[before - 1]}, {"dark", "light", "bright", "shiny", "new", "old", "big",
-                                                        "small", "little", "brand", "second", "another"})))
-    --before;
+  while (before > 0 && (is_color_word(w[before - 1]) || detail::is_vehicle_premodifier(w[before - 1]))) --before;
   if (before == 0) return std::nullopt;
   const std::string& det = w[before - 1];
-  if (!(det == "a" || det == "an" || det == "another" || det == "the" || det == "one" || det == "some" ||
-        (text::is_number_word(det) && before < at)))
+  if (!(detail::is_vehicle_determiner(det) || det == "one" || (text::is_number_word(det) && before < at)))
     return std::nullopt;
   for (const auto& e : distinct_models()) {
     if (!words_at(w, at, e.words)) continue;

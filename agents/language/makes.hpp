@@ -22,5 +22,9 @@ bool words_at(const std::vector<std::string>& w, size_t at, const std::vector<st
 // As words_at, or with the phrase's last word in the plural ("range rovers", "model ys").
 bool words_at_plural(const std::vector<std::string>& w, size_t at, const std::vector<std::string>& phrase);
 bool is_unit_word(const std::string& w);
+// Where a vehicle noun belongs: after a determiner ("a", "the", "another") and words that only
+// describe it ("new", "big", "dark", "second"); colours and numbers are asked for on their own.
+bool is_vehicle_determiner(const std::string& w);
+bool is_vehicle_premodifier(const std::string& w);
 
 }  // namespace chatsim::agents::lexicon::detail

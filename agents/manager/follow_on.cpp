@@ -19,7 +19,7 @@ void Manager::continue_previous_round(const Conversation& c, const std::string& 
                                       std::vector<Instruction>& instructions) {
   if (c.rounds.empty() || instructions.size() != 1) return;
   if (instructions.front().kind != "add" && instructions.front().kind != "unclear") return;
-  auto w = text::words(command);
+  const auto w = text::words(command);
   const bool as_well = w.size() >= 2 && w[w.size() - 2] == "as" && w.back() == "well";
   const bool goes_on = !w.empty() && (w.front() == "and" || w.front() == "also" || w.front() == "plus" ||
                                       w.back() == "too" || as_well);
@@ -29,11 +29,11 @@ void Manager::continue_previous_round(const Conversation& c, const std::string& 
       }))
     return;
   const auto& last = c.rounds.back().at("instructions");
-  if (last.empty() || !last.back().get<std::string>().starts_with("delete: ")) return;
+  static const std::string kDelete = "delete: ";  // as run_round records an instruction
+  if (last.empty() || !last.back().get<std::string>().starts_with(kDelete)) return;
   instructions.front().kind = "delete";
-  std::erase_if(w, [](const std::string& x) { return x == "and" || x == "also" || x == "plus" || x == "too"; });
   if (text::find_phrase(w, "next one") != std::string::npos || text::find_phrase(w, "one more") != std::string::npos)
-    instructions.front().text = last.back().get<std::string>().substr(8);
+    instructions.front().text = last.back().get<std::string>().substr(kDelete.size());
   else
     instructions.front().text = "remove " + instructions.front().text;
 }
@@ -54,8 +54,7 @@ bool Manager::replaces_last_round(const Conversation& c, const std::string& comm
   if (!opens || !corrects) return false;
   const std::string kind = instructions.front().kind;
   if (kind != "delete" && kind != "view") return false;
-  const auto same = [&](const std::string& k) { return k == kind; };
-  if (!std::all_of(instructions.begin(), instructions.end(), [&](const Instruction& in) { return same(in.kind); }))
+  if (!std::all_of(instructions.begin(), instructions.end(), [&](const Instruction& in) { return in.kind == kind; }))
     return false;
   const auto& last = c.rounds.back().at("instructions");
   return !last.empty() && std::all_of(last.begin(), last.end(), [&](const nlohmann::json& x) {

@@ -321,7 +321,7 @@ bool keeps_left(const scene::Scene& scene) {
   return oncoming && *oncoming < 0;
 }
 
-ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, double current_y_m) {
+ViewChange resolve_on_map(ViewChange change, const scene::Scene& scene, double current_y_m) {
   if (change.toward_kerb_m) {
     if (!change.translation_m) change.translation_m = std::array<double, 3>{0, 0, 0};
     (*change.translation_m)[1] += (keeps_left(scene) ? 1 : -1) * *change.toward_kerb_m;

@@ -20,23 +20,25 @@ struct ViewChange {
   std::optional<double> pitch_deg;                      // + looks up
   std::optional<std::string> ego_motion;                // none, slow, fast
   // "closer to the kerb" (+) or "toward the middle of the road" (-): sideways by the road's
-  // handedness, which only the scene knows (resolve_road_sides).
+  // handedness, which only the scene knows (resolve_on_map).
   std::optional<double> toward_kerb_m;
   // "move the camera over to the oncoming lane": left, right, oncoming or parking, a lane of the
-  // scene's map whose centre the view moves sideways to (resolve_road_sides).
+  // scene's map whose centre the view moves sideways to (resolve_on_map).
   std::optional<std::string> to_lane;
   // "move the camera forward to the junction": ahead to the middle of the first junction on the
-  // ego's lane (resolve_road_sides).
+  // ego's lane (resolve_on_map).
   bool to_junction = false;
   bool reset = false;
+  bool needs_map() const { return toward_kerb_m || to_lane || to_junction; }
 };
 ViewChange parse_view(const std::string& instruction);
 // Whether traffic keeps left: the nearest lane running against the ego's lies on its right.
 bool keeps_left(const scene::Scene& scene);
 // toward_kerb_m and to_lane turned into a sideways translation for the scene's handedness and
-// lanes, from the view's current sideways offset current_y_m. A lane the map does not have
-// beside the ego stays in to_lane, unresolved: the caller says so.
-ViewChange resolve_road_sides(ViewChange change, const scene::Scene& scene, double current_y_m = 0);
+// lanes, from the view's current sideways offset current_y_m, and to_junction into the distance
+// ahead to the junction. A lane or junction the map does not have stays in to_lane or
+// to_junction, unresolved: the caller says so.
+ViewChange resolve_on_map(ViewChange change, const scene::Scene& scene, double current_y_m = 0);
 nlohmann::json to_json(const ViewChange& v);
 ViewChange view_change_from_json(const nlohmann::json& j);
 

@@ -93,8 +93,8 @@ TEST(LanguageBinding, TheKerbIsOnTheSideTheRoadsTrafficKeepsTo) {
   const auto right_hand = chatsim::scene::load_scene(dir / "blind-avenue");
   EXPECT_TRUE(view::keeps_left(left_hand));
   EXPECT_FALSE(view::keeps_left(right_hand));
-  EXPECT_EQ(*view::resolve_road_sides(change, left_hand).translation_m, (std::array<double, 3>{0, 1, 0}));
-  EXPECT_EQ(*view::resolve_road_sides(change, right_hand).translation_m, (std::array<double, 3>{0, -1, 0}));
+  EXPECT_EQ(*view::resolve_on_map(change, left_hand).translation_m, (std::array<double, 3>{0, 1, 0}));
+  EXPECT_EQ(*view::resolve_on_map(change, right_hand).translation_m, (std::array<double, 3>{0, -1, 0}));
 }
 
 TEST(LanguageBinding, WishesCorrectionsAndMovesOfWhatIsThere) {
@@ -141,9 +141,9 @@ TEST(LanguageBinding, SelfCorrectionsAndTheCameraToANamedLane) {
   const auto avenue = chatsim::scene::load_scene(std::filesystem::path(CHATSIM_SOURCE_DIR) / "tests/data/layouts/blind-avenue");
   const auto over = view::parse_view("move the camera over to the oncoming lane");
   EXPECT_EQ(over.to_lane, "oncoming");
-  EXPECT_EQ(*view::resolve_road_sides(over, avenue).translation_m, (std::array<double, 3>{0, 7, 0}));
+  EXPECT_EQ(*view::resolve_on_map(over, avenue).translation_m, (std::array<double, 3>{0, 7, 0}));
   // From a view already 2 m to the left, the move is what is left to go.
-  EXPECT_DOUBLE_EQ((*view::resolve_road_sides(over, avenue, 2.0).translation_m)[1], 5.0);
+  EXPECT_DOUBLE_EQ((*view::resolve_on_map(over, avenue, 2.0).translation_m)[1], 5.0);
 }
 
 TEST(LanguageBinding, QuestionsWithoutSomethingAndQuarterTurnsByName) {
