@@ -47,7 +47,7 @@ def giveway():
                obj(2, "vehicle.car", static(24, -2.85), "white", VAN),
                obj(3, "vehicle.car", track_along(minor_out, 6, 5), "black"),
                obj(4, "vehicle.car", track_along(south[51.25], 140, 12), "silver"),
-               obj(5, "vehicle.car", track_along(north[54.75], 130, 11), "blue", SIZES["suv"]),
+               obj(5, "vehicle.car", track_along(north[54.75], 70, 11), "blue", SIZES["suv"]),
                obj(6, "vehicle.bus.rigid", static(61.5, 32, NORTH), "green"),
                obj(7, "vehicle.car", track_along(north[58.25], 180, 9), "yellow"),
                obj(8, "vehicle.truck", track_along(south[47.75], 60, 7), "white"),
