@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <numbers>
 
@@ -94,6 +95,8 @@ std::optional<std::string> lane_words(const Words& p) {
                         "other direction", "the other way", "opposite way", "coming toward", "toward me", "toward us",
                         "coming at me", "coming at us"}))
     return "oncoming";
+  if (text::has_any(p, {"main road", "main street", "major road", "main carriageway", "bigger road", "big road"}))
+    return "main";  // the ego's road or the one it joins (selection.cpp)
   // "at the crossing" is a place; "the person crossing the road" says what the person does.
   if (text::has_any(p, {"side street", "side road", "cross street", "crossroads", "junction", "intersection",
                         "the crossing", "a crossing", "cross traffic", "side streets", "farm track", "dirt track",
@@ -134,6 +137,31 @@ std::optional<Relation> split_relation(const Words& p) {
     return Relation{Words(p.begin(), p.begin() + long(at)), reference, relation};
   }
   return std::nullopt;
+}
+
+// "within 16 m of me", "closer than 20 metres", "more than 30 m away": a bound on the distance
+// from the ego, said by the words just before (or after) the amount.
+void read_distance_bounds(const Words& p, Selector& s) {
+  for (const auto& q : text::quantities(p, {"meters", "meter", "m", "feet", "ft"})) {
+    const std::string& unit = p[q.end - 1];
+    const double metres = q.value * (unit == "feet" || unit == "ft" ? 0.3048 : 1.0);
+    const Words before(p.begin() + long(q.begin >= 3 ? q.begin - 3 : 0), p.begin() + long(q.begin));
+    const Words after(p.begin() + long(q.end), p.begin() + long(std::min(p.size(), q.end + 2)));
+    const auto ends_with = [&](std::initializer_list<std::string_view> phrases) {
+      for (const auto phrase : phrases) {
+        const size_t at = text::find_phrase(before, phrase);
+        if (at != std::string::npos && at + text::words(phrase).size() == before.size()) return true;
+      }
+      return false;
+    };
+    if (ends_with({"within", "less than", "closer than", "nearer than", "under", "inside", "no more than",
+                   "no further than", "no farther than", "at most"}) ||
+        text::has_any(after, {"or closer", "or less", "or nearer"}))
+      s.within_m = metres;
+    else if (ends_with({"more than", "further than", "farther than", "beyond", "over", "at least", "past"}) ||
+             text::has_any(after, {"or more", "or further", "or farther"}))
+      s.beyond_m = metres;
+  }
 }
 
 // "the second car", "the last parked car", "two cars", "both cars": which of the matches, and how
@@ -250,10 +278,19 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
     s.moving = true;
   // "the row of bays on the left", "the cars in the spaces": what stands in a bay is parked.
   s.parked = text::has_any(p, {"parked", "parking", "bay", "bays", "spaces", "spots", "parking space"});
+  read_distance_bounds(p, s);
   read_order_and_count(p, types, s);
   return s;
 }
 
+}  // namespace
+
+namespace {
+std::string metres_text(double m) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", std::round(m * 10) / 10);
+  return buf;
+}
 }  // namespace
 
 std::string describe(const Selector& s) {
@@ -269,6 +306,8 @@ std::string describe(const Selector& s) {
   if (s.lane_use) out += " (in the " + *s.lane_use + " lane)";
   if (s.road_side) out += *s.road_side == "far" ? " across the road" : " on the ego's side of the road";
   if (s.junction) out += " " + *s.junction + " the junction";
+  if (s.within_m) out += " within " + metres_text(*s.within_m) + " m";
+  if (s.beyond_m) out += " beyond " + metres_text(*s.beyond_m) + " m";
   return out;
 }
 

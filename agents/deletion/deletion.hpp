@@ -26,6 +26,8 @@ struct Selector {
   bool parked = false;                  // "parked": standing at the kerb, not waiting in a lane
   std::optional<bool> approaching;      // moving toward the ego ("the car coming toward us")
   bool reversing = false;               // moves backwards at some time ("the car backing out of its bay")
+  std::optional<double> within_m;       // "within 16 m of me": at most this far from the ego at frame 0
+  std::optional<double> beyond_m;       // "more than 30 m away": at least this far
   std::string quantity = "one";         // one, all, n
   int n = 1;
   std::optional<std::string> order;     // nearest, farthest

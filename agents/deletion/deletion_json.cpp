@@ -20,6 +20,8 @@ nlohmann::json selector_json(const Selector& s) {
   util::put_optional(j, "approaching", s.approaching);
   util::put_optional(j, "moving", s.moving);
   if (s.reversing) j["reversing"] = true;
+  util::put_optional(j, "within_m", s.within_m);
+  util::put_optional(j, "beyond_m", s.beyond_m);
   if (s.parked) j["parked"] = true;
   if (s.order) {
     j["order"] = *s.order;
@@ -46,6 +48,8 @@ Selector selector_from(const nlohmann::json& j) {
   util::get_optional(j, "moving", s.moving);
   s.parked = j.value("parked", false);
   s.reversing = j.value("reversing", false);
+  util::get_optional(j, "within_m", s.within_m);
+  util::get_optional(j, "beyond_m", s.beyond_m);
   util::get_optional(j, "order", s.order);
   s.nth = j.value("nth", 1);
   return s;

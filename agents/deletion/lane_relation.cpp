@@ -127,7 +127,36 @@ LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p) 
   return r;
 }
 
+namespace {
+
+// Driving lanes within `reach` of p running along (|cos| > 0.7) or across (|cos| < 0.5) `yaw`.
+int lanes_near(const scene::LaneMap& lanes, const Eigen::Vector2d& p, double yaw, double reach, bool across) {
+  int n = 0;
+  for (size_t i = 0; i < lanes.lanes().size(); ++i) {
+    if (lanes.lanes()[i].type != "driving") continue;
+    const auto pos = lanes.project(int(i), p);
+    if (pos.s <= 0 || pos.s >= lanes.lanes()[i].length() || std::abs(pos.lateral) > reach) continue;
+    const double c = std::abs(std::cos(pos.tangent_yaw - yaw));
+    n += across ? c < 0.5 : c > 0.7;
+  }
+  return n;
+}
+
+}  // namespace
+
+std::string main_road(const scene::Scene& scene) {
+  if (scene.lanes.empty() || scene.frames.empty()) return "road";
+  const auto& pose = scene.frames.front().ego_to_world;
+  const Eigen::Vector2d ego = pose.translation().head<2>();
+  const double yaw = std::atan2(pose.linear()(1, 0), pose.linear()(0, 0));
+  const auto junction = scene.lanes.junction_ahead(ego, yaw);
+  if (!junction) return "road";
+  const Eigen::Vector2d at = ego + (junction->from + junction->to) / 2 * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+  return lanes_near(scene.lanes, at, yaw, 15, true) > lanes_near(scene.lanes, ego, yaw, 12, false) ? "cross" : "road";
+}
+
 bool has_lane(const LaneRelation& r, const std::string& lane) {
+  if (lane == "road") return r.own >= 0 && !r.cross && !r.parking && !r.shoulder;
   if (lane == "ego") return r.ego;
   if (lane == "left") return r.left;
   if (lane == "middle") return r.middle;

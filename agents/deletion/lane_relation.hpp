@@ -32,8 +32,12 @@ struct LaneRelation {
 // p: the object's centre at frame 0, world frame.
 LaneRelation lane_relation(const scene::Scene& scene, const Eigen::Vector2d& p);
 
+// "The main road": "cross" where the ego's lane meets a road of more lanes than its own (a minor
+// road's junction), else "road" (the ego's road, every driving lane along it).
+std::string main_road(const scene::Scene& scene);
+
 // Whether a relation has the lane word a selector asks for (ego, left, middle, right, oncoming,
-// inner, outer, cross, parking, ramp, shoulder), or the road side (near, far).
+// inner, outer, cross, parking, ramp, shoulder, road), or the road side (near, far).
 bool has_lane(const LaneRelation& r, const std::string& lane);
 
 }  // namespace chatsim::agents::deletion

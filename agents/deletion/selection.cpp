@@ -61,6 +61,7 @@ bool matches(const Selector& s, const Candidate& c) {
   if (s.color && (!c.object->color_rgb || lexicon::color_class(*c.object->color_rgb) != *s.color)) return false;
   if (s.moving && (c.speed > 0.5) != *s.moving) return false;
   if (s.reversing && !c.reverses) return false;
+  if ((s.within_m && c.d0 > *s.within_m) || (s.beyond_m && c.d0 < *s.beyond_m)) return false;
   if (s.lane && !has_lane(c.lane, *s.lane)) return false;
   if (s.road_side && !has_lane(c.lane, *s.road_side)) return false;
   if (s.approaching) {  // its heading points at the ego's place
@@ -101,6 +102,18 @@ void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::ve
     }
   };
   if (m.empty() && (t.noun == "bike" || t.noun == "bikes")) widen_to({"vehicle.motorcycle"});
+  // "the pickup": nuScenes labels pickups as trucks, other datasets as cars. A long, low car or a
+  // short truck is one; a lorry only when nothing else fits.
+  if (t.noun.find("pickup") != std::string::npos) {
+    widen_to({"vehicle.car"});
+    const auto pickup_sized = [](const Candidate* c) {
+      const auto& size = c->object->size_lwh;
+      if (c->object->has_category_prefix("vehicle.truck")) return size.x() <= 6.5 && size.z() <= 2.3;
+      return c->object->has_category_prefix("vehicle.car") && size.x() >= 5.0 && size.z() <= 2.0;
+    };
+    if (std::any_of(m.begin(), m.end(), pickup_sized)) std::erase_if(m, [&](const Candidate* c) { return !pickup_sized(c); });
+    else std::erase_if(m, [](const Candidate* c) { return !c->object->has_category_prefix("vehicle.truck"); });
+  }
   if (m.empty() && t.category == "vehicle.truck") widen_to({"vehicle.trailer", "vehicle.construction"});
 }
 
@@ -241,7 +254,9 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
   std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.d0 < b.d0; });
   std::vector<std::string> chosen;
   const Candidate* last = nullptr;  // what the phrase before chose ("... and the truck behind it")
-  for (const auto& t : r.targets) {
+  for (const auto& said : r.targets) {
+    Selector t = said;
+    if (t.lane == "main") t.lane = main_road(scene);
     std::vector<const Candidate*> m;
     for (const auto& c : cands)
       if (matches(t, c)) m.push_back(&c);
@@ -281,9 +296,12 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
       last = m[k];
     }
   }
-  for (const auto& e : r.except)
+  for (const auto& said : r.except) {
+    Selector e = said;
+    if (e.lane == "main") e.lane = main_road(scene);
     for (const auto& c : cands)
       if (matches(e, c)) chosen.erase(std::remove(chosen.begin(), chosen.end(), c.object->id), chosen.end());
+  }
   for (const auto& c : cands)
     if (std::find(chosen.begin(), chosen.end(), c.object->id) != chosen.end() &&
         std::find(out.ids.begin(), out.ids.end(), c.object->id) == out.ids.end())

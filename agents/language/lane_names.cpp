@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <iterator>
 
 #include "agents/language/text.hpp"
@@ -99,6 +100,7 @@ std::optional<std::string> blank_junction_place(std::vector<std::string>& w) {
   static const std::pair<const char*, const char*> kWhere[] = {
       {"past", "after"},          {"after", "after"},     {"beyond", "after"},       {"before", "before"},
       {"short of", "before"},     {"this side of", "before"}, {"ahead of", "before"}, {"in front of", "before"},
+      {"across", "after"}, {"over", "after"}, {"on the other side of", "after"}, {"on the far side of", "after"},
       {"near", "near"}};
   std::optional<std::string> side;
   for (const auto& [where, meaning] : kWhere)
@@ -112,6 +114,48 @@ std::optional<std::string> blank_junction_place(std::vector<std::string>& w) {
     }
   return side;
 }
+
+namespace {
+
+// Whether a driving lane runs beside parking lane `bay` (within `reach` of its middle), of the
+// kind asked: a road's lane (one way) or a car park's aisle (both ways).
+bool driving_lane_beside(const scene::LaneMap& map, int bay, double reach, bool two_way) {
+  const auto& lane = map.lanes()[size_t(bay)];
+  const Eigen::Vector2d mid = map.point_at(bay, lane.length() / 2);
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    const auto& other = map.lanes()[i];
+    if (other.type != "driving" || (other.direction == scene::TrafficDirection::Both) != two_way) continue;
+    const auto pos = map.project(int(i), mid);
+    if (pos.s > 0 && pos.s < other.length() && std::abs(pos.lateral) < reach) return true;
+  }
+  return false;
+}
+
+// A car park the ids do not name: bays along two-way aisles and not along a road's lanes, and
+// those aisles.
+std::vector<int> car_park_by_shape(const scene::LaneMap& map) {
+  std::vector<int> bays, out;
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    const auto& l = map.lanes()[i];
+    if (l.type != "parking") continue;
+    const double reach = l.width / 2 + 4.5;
+    if (driving_lane_beside(map, int(i), reach, true) && !driving_lane_beside(map, int(i), reach, false))
+      bays.push_back(int(i));
+  }
+  out = bays;
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    const auto& l = map.lanes()[i];
+    if (l.type != "driving" || l.direction != scene::TrafficDirection::Both) continue;
+    const bool lined = std::any_of(bays.begin(), bays.end(), [&](int b) {
+      const auto pos = map.project(int(i), map.point_at(b, map.lanes()[size_t(b)].length() / 2));
+      return pos.s > 0 && pos.s < l.length() && std::abs(pos.lateral) < map.lanes()[size_t(b)].width / 2 + 4.5;
+    });
+    if (lined) out.push_back(int(i));
+  }
+  return out;
+}
+
+}  // namespace
 
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use) {
   const bool turn = use.starts_with("turn");
@@ -128,6 +172,7 @@ std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use
       for (size_t i = 0; i < map.lanes().size(); ++i)
         if (map.lanes()[i].for_stopping()) out.push_back(int(i));
   }
+  if (out.empty() && use == "car_park") out = car_park_by_shape(map);
   // A roundabout the ids do not name: a lane whose centreline closes on itself.
   if (out.empty() && use == "roundabout")
     for (size_t i = 0; i < map.lanes().size(); ++i)

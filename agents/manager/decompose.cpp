@@ -9,6 +9,7 @@
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 #include "agents/manager/classify.hpp"
+#include "agents/manager/spec_fields.hpp"
 
 namespace chatsim::agents::manager {
 namespace {
@@ -328,7 +329,7 @@ std::string without_self_corrections(std::string command) {
 
 std::vector<Instruction> decompose(const std::string& command_in) {
   std::vector<Instruction> out;
-  const std::string command = without_self_corrections(command_in);
+  const std::string command = without_self_corrections(spec_as_sentence(command_in).value_or(command_in));
   for (const auto& sentence : sentences(command)) {
     if (const size_t colon = sentence.find(':'); colon != std::string::npos) {
       const auto parts = titled(sentence, colon);

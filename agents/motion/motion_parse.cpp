@@ -395,6 +395,15 @@ MotionIntent parse_motion(const std::string& instruction) {
     m.action = "join";
   find_speed(w, m);
   find_direction(w, m);
+  // "coming down the road from the right": crossing traffic, on a road across the ego's ahead,
+  // driving toward the ego's path (not beside the ego, nor behind it in its lane).
+  if (!m.relative && !m.lane && !m.action &&
+      has_any(w, {"from the right", "from my right", "from our right", "from the left", "from my left", "from our left"}) &&
+      has_any(w, {"coming", "comes", "approaching", "approaches", "driving", "drives", "heading", "crossing", "crosses"}) &&
+      !has_any(w, {"behind", "lane", "overtake", "overtaking", "passing"})) {
+    m.lane = "cross";
+    if (!m.direction) m.direction = "toward";
+  }
   // Moving words after "parked": it leaves (a revision "pull out and drive away" ends the parking).
   if (m.action == "static" && !has_any(w, {"about to", "ready to", "preparing to", "waiting to"}) &&
       has_any(w, {"pull out", "pulls out", "pulling out", "drive off", "drives off", "drive away", "drives away",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace chatsim::agents::motion::detail {
 
@@ -313,6 +314,9 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         c.score += lane_without_distance ? std::min(off, 30.0) + 0.1 * off : off;
         c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
         if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(road ? road->lateral : pe.y());
+        // "Ahead" in a lane off to one side, no distance said: far enough up it to be in front.
+        if (placement == "front" && !road && !m_.distance_m)
+          c.score += 1.5 * std::max(0.0, std::abs(std::atan2(pe.y(), pe.x())) * 180 / std::numbers::pi - 20);
         if (side) c.score += 2.0 * std::abs(pe.y()) + 0.5 * std::abs(pe.x()) + 1.5 * degrees_out_of_sight(bearings, pe);
         if (parked && movable_ && !parking && (m_.action == "static")) c.score += 8;  // parked cars belong at the kerb
         if (!movable_ && parking) c.score += 3;
