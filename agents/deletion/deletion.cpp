@@ -95,6 +95,19 @@ std::optional<std::string> lane_words(const Words& p) {
                         "other direction", "the other way", "opposite way", "coming toward", "toward me", "toward us",
                         "coming at me", "coming at us"}))
     return "oncoming";
+  // "the car waiting to leave the gas station", "the van coming out of the driveway": on a lane that
+  // meets the road (no map names a gas station); pulling out of a bay or a car park is not, nor
+  // out of a lane named by its use (its words are blanked to "_": the lane_use says where).
+  if (const size_t at = text::find_any(p, {"waiting to leave", "waiting to exit", "waiting to pull out of",
+                                           "about to pull out of", "about to leave", "waiting to come out of",
+                                           "coming out of", "pulling out of", "emerging from"});
+      at != std::string::npos) {
+    const Words place(p.begin() + long(at), p.end());
+    if (std::find(place.begin(), place.end(), "_") == place.end() &&
+        !text::has_any(place, {"space", "bay", "spot", "parking", "kerb", "curb", "stall", "car park", "carpark", "lot",
+                               "garage"}))
+      return "cross";
+  }
   if (text::has_any(p, {"main road", "main street", "major road", "main carriageway", "bigger road", "big road"}))
     return "main";  // the ego's road or the one it joins (selection.cpp)
   // "at the crossing" is a place; "the person crossing the road" says what the person does.

@@ -214,6 +214,49 @@ std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0
 
 namespace {
 
+// Whether a driving lane starts where this one ends (within 3 m, within 30 deg of its way).
+bool lane_goes_on(const scene::LaneMap& map, int lane, int dir) {
+  const auto& l = map.lanes()[size_t(lane)];
+  const double end_s = dir > 0 ? l.length() : 0.0;
+  const Eigen::Vector2d end = map.point_at(lane, end_s);
+  const double yaw = map.tangent_yaw_at(lane, end_s) + (dir > 0 ? 0 : kPi);
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    const auto& o = map.lanes()[i];
+    if (int(i) == lane || o.type != "driving") continue;
+    const auto pos = map.project(int(i), end);
+    const bool at_start = o.direction == scene::TrafficDirection::Backward ? pos.s > o.length() - 3 : pos.s < 3;
+    if ((at_start || o.direction == scene::TrafficDirection::Both) && std::abs(pos.lateral) < 3 &&
+        pos.s < o.length() - 1 && std::abs(wrap(map.travel_yaw_at(int(i), pos.s) - yaw)) < kPi / 6)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<RoadEndTurn> turn_where_lane_ends(const scene::LaneMap& map, int lane, double s0, int dir, double reach,
+                                                 double length) {
+  const auto& l = map.lanes()[size_t(lane)];
+  const double to_end = dir > 0 ? l.length() - s0 : s0;
+  if (l.type != "driving" || l.closes_on_itself() || to_end > reach || lane_goes_on(map, lane, dir)) return std::nullopt;
+  const Eigen::Vector2d end = map.point_at(lane, dir > 0 ? l.length() : 0.0);
+  std::optional<RoadEndTurn> best;
+  double best_gap = 1e9;
+  for (const int sign : {-1, 1}) {
+    auto plan = turn_path(map, lane, s0, dir, sign, length);
+    if (!plan) continue;
+    const int target = map.find(plan->target_lane);
+    const double gap = target < 0 ? 1e9 : std::abs(map.project(target, end).lateral);
+    if (gap < best_gap) {
+      best_gap = gap;
+      best = RoadEndTurn{sign, std::move(*plan)};
+    }
+  }
+  return best;
+}
+
+namespace {
+
 struct LaneBeside {
   int lane = -1;
   double lateral = 0;  // signed, left of travel positive
@@ -286,7 +329,7 @@ double arc_where_turned(const Path& path, double from, double degrees) {
 }
 
 std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times, double a_lat,
-                                   double a_long) {
+                                   double a_long, bool from_rest) {
   std::vector<double> out;
   out.reserve(times.size());
   if (v_desired <= 0 || path.points.size() < 2) {
@@ -307,6 +350,7 @@ std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std
       v[i] = std::min(v_desired, k > 1e-6 ? std::sqrt(a_lat / k) : v_desired);
     }
   }
+  if (from_rest) v[0] = 0;
   for (size_t i = n - 1; i-- > 0;) v[i] = std::min(v[i], std::sqrt(v[i + 1] * v[i + 1] + 2 * a_long * ds));
   for (size_t i = 1; i < n; ++i) v[i] = std::min(v[i], std::sqrt(v[i - 1] * v[i - 1] + 2 * a_long * ds));
   double s = 0, t = times.empty() ? 0 : times.front();
@@ -314,7 +358,9 @@ std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std
   for (const double target : times) {
     while (t + 1e-12 < target) {
       const size_t i = std::min(n - 1, size_t(s / ds));
-      s += std::max(v[i], 0.05) * dt;
+      // From rest the first cell's speed is 0: its mean over the cell gets it moving.
+      const double vi = from_rest ? 0.5 * (v[i] + v[std::min(n - 1, i + 1)]) : v[i];
+      s += std::max(vi, 0.05) * dt;
       t += dt;
     }
     out.push_back(s);

@@ -43,6 +43,14 @@ struct TurnPlan {
 // Along the lane from s0 in direction dir, the next crossing with a lane whose legal travel
 // turns left (sign +1) or right (sign -1) by roughly 90 degrees; the path turns onto it.
 std::optional<TurnPlan> turn_path(const scene::LaneMap& map, int lane, double s0, int dir, int sign, double length);
+// Where the lane ends within `reach` at a road across it with no lane going on straight (a T
+// junction): the turn into that road's nearer lane, a path of `length`; sign +1 left, -1 right.
+struct RoadEndTurn {
+  int sign = 0;
+  TurnPlan plan;
+};
+std::optional<RoadEndTurn> turn_where_lane_ends(const scene::LaneMap& map, int lane, double s0, int dir, double reach,
+                                                 double length);
 // The nth exit (1-based, in the ring's direction) of the roundabout the lane runs into, if any.
 std::optional<TurnPlan> roundabout_exit_path(const scene::LaneMap& map, int lane, double s0, int dir, int nth,
                                              double length);
@@ -59,9 +67,9 @@ LaneChangePlan lane_change_path(const scene::LaneMap& map, int lane, double s0, 
                                 double start_after_m, double change_length_m);
 
 // Positions along the path at the given times, driving at up to v_desired with lateral
-// acceleration at most a_lat and starting at the allowed speed.
+// acceleration at most a_lat and starting at the allowed speed, or from rest.
 std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times,
-                                   double a_lat = 3.0, double a_long = 2.5);
+                                   double a_lat = 3.0, double a_long = 2.5, bool from_rest = false);
 
 // The first arc length past `from` where the path heads at least `degrees` away from its
 // heading at `from`; infinity when it never does.

@@ -279,12 +279,13 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
   result.ok = true;
   if (!e.crosses_pedestrian.empty())
     result.notes.push_back("the recorded path of " + e.crosses_pedestrian + " runs through it");
+  if (e.waits_s > 0) result.notes.push_back("it waits " + fmt(e.waits_s) + " s for a gap in the traffic, then pulls out");
   result.t_s.resize(e.poses.size());
   result.trajectory = e.poses;
   result.lane = scene_.lanes.lanes()[size_t(c.lane)].id;
   // The lane asked for had no start that works: say which lane it got instead.
   const bool edge_missed = m_.lane_edge && lane_edge_penalties()[size_t(c.lane)] > 1.0;
-  lane_missed_ = edge_missed || lane_hint_penalty(c.lane, c.s) >= 60;
+  lane_missed_ = edge_missed || lane_hint_penalty(c.lane, c.s, c.dir) >= 60;
   if (lane_missed_)
     result.notes.push_back("no start in the " + (edge_missed ? *m_.lane_edge : lane_said()) +
                            " lane was free of other traffic; it drives in lane " + result.lane + " instead");

@@ -104,9 +104,9 @@ bool Planner::same_way_as_ego(int lane, double s) const {
   return std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw)) > 0;
 }
 
-double Planner::lane_hint_penalty(int lane, double s) const {
+double Planner::lane_hint_penalty(int lane, double s, int dir) const {
   const bool off_use = !use_lanes_.empty() && std::find(use_lanes_.begin(), use_lanes_.end(), lane) == use_lanes_.end();
-  return (off_use ? 60 : 0) + said_lane_penalty(lane, s);
+  return (off_use ? 60 : 0) + said_lane_penalty(lane, s, dir);
 }
 
 std::string Planner::lane_said() const {
@@ -114,7 +114,7 @@ std::string Planner::lane_said() const {
   return m_.lane.value_or(m_.lane_edge.value_or(""));
 }
 
-double Planner::said_lane_penalty(int lane, double s) const {
+double Planner::said_lane_penalty(int lane, double s, int dir) const {
   if (!m_.lane) return 0;
   const auto& l = scene_.lanes.lanes()[size_t(lane)];
   const double lat = lateral_of(lane);
@@ -136,11 +136,14 @@ double Planner::said_lane_penalty(int lane, double s) const {
     if (l.type != "driving" || std::abs(std::cos(wrap(scene_.lanes.travel_yaw_at(lane, s) - ego_.yaw))) >= 0.5) return 60;
     // Turning out of a side street: its lane toward the road, not the one leading away from it.
     const bool turns_out = m_.action == "turn_left" || m_.action == "turn_right" || m_.action == "join";
+    // Whether its way leads toward the ego's road or away from it, a few metres on (a two-way
+    // driveway is driven either way; a cross street runs on across the road).
     const double here = std::abs(ego_.to_ego(scene_.lanes.point_at(lane, s)).y());
-    const double at_end = std::abs(ego_.to_ego(scene_.lanes.point_at(lane, l.length())).y());
+    const double on = s + 5.0 * ((dir != 0 ? dir : legal_dir(l)) > 0 ? 1 : -1);
+    const bool leads_away = std::abs(ego_.to_ego(scene_.lanes.point_at(lane, on)).y()) > here;
     // Reversing out of it: facing up the street, on the lane leading away from the road.
     const bool reverses_out = m_.action == "backward";
-    return (turns_out && at_end > here) || (reverses_out && at_end < here) ? 60 : 0;
+    return (turns_out && leads_away) || (reverses_out && !leads_away) ? 60 : 0;
   }
   return 0;
 }
@@ -233,8 +236,9 @@ void Planner::place_by_junction(const std::string& placement, double widen, Regi
 Region Planner::search_region(const std::string& placement, double widen) const {
   Region region = region_for(placement, m_, widen);
   if (m_.junction && junction_) place_by_junction(placement, widen, region);
-  // "on the farm track", "in the bus lane" with no side or distance: wherever that lane is ahead.
-  if (!use_lanes_.empty() && placement == "front" && !m_.distance_m) {
+  // "on the farm track", "in the bus lane", "out of the driveway" with no side or distance:
+  // wherever that lane is ahead.
+  if ((!use_lanes_.empty() || m_.lane == "cross") && placement == "front" && !m_.distance_m) {
     region.a_min = std::min(region.a_min, -75.0);
     region.a_max = std::max(region.a_max, 75.0);
     region.d_max = std::max(region.d_max, 120.0);
@@ -312,7 +316,7 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         Candidate c{int(li), s, dir, parked, *ds};
         const double off = std::abs((road ? road->along : pe.norm()) - region.d_pref);
         c.score += lane_without_distance ? std::min(off, 30.0) + 0.1 * off : off;
-        c.score += lane_hint_penalty(int(li), s) + edge_penalty[li];
+        c.score += lane_hint_penalty(int(li), s, dir) + edge_penalty[li];
         if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(road ? road->lateral : pe.y());
         // "Ahead" in a lane off to one side, no distance said: far enough up it to be in front.
         if (placement == "front" && !road && !m_.distance_m)

@@ -49,8 +49,8 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
     if (std::abs(lat) < 1.5) return std::string("it starts in the ego's lane already");
     m.action = lat > 0 ? "lane_change_right" : "lane_change_left";
   }
-  if (m.action == "join") {  // out of a side street: whichever turn reaches a lane
-    const bool left = turn_path(map, c.lane, c.s, c.dir, 1, total).has_value();
+  if (m.action == "join") {  // out of a side street: the turn asked, else whichever reaches a lane
+    const bool left = m.join_side != 0 ? m.join_side > 0 : turn_path(map, c.lane, c.s, c.dir, 1, total).has_value();
     m.action = left ? "turn_left" : "turn_right";
   }
   if (m.action.rfind("exit_", 0) == 0 && speed > 0) {  // the nth exit round a roundabout
@@ -89,6 +89,13 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
       return std::string("no lane to the ") + (m.action == "lane_change_left" ? "left" : "right") +
              " in the same direction to change into";
     m.path = std::move(lc.path);
+  } else if (const auto corner = m_.action ? std::nullopt
+                                            : turn_where_lane_ends(map, c.lane, c.s, c.dir, speed * times_.back() - 15, total)) {
+    // Nothing said about its way and its road ends at a T it reaches and turns at within the
+    // clip: round the corner, not off the map.
+    m.action = corner->sign > 0 ? "turn_left" : "turn_right";
+    m.path = std::move(corner->plan.path);
+    m.connector = std::move(corner->plan.connector);
   } else {
     m.action = "straight";
     m.path = lane_path(map, c.lane, c.s, c.dir, total);
@@ -100,6 +107,15 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
 // traffic's pace instead (recorded vehicles cannot brake for it).
 Evaluated Planner::evaluate(const Candidate& c) const {
   Evaluated e = evaluate_at(c, desired_speed(c.parked));
+  // Pulling out into traffic it would meet: it waits at the mouth for a gap (recorded traffic
+  // cannot make room), up to most of the clip.
+  // Either way onto the road, whichever has a gap first.
+  if (e.first_collision >= 0 && m_.action == "join" && !c.parked)
+    for (double wait = 0; wait <= times_.back() * 0.8; wait += 1)
+      for (const int side : {1, -1}) {
+        Evaluated waiting = evaluate_at(c, e.speed, wait, side);
+        if (waiting.valid && waiting.first_collision < 0) return waiting;
+      }
   if (e.first_collision < 0 || m_.speed || m_.speed_mps || m_.chase.value_or(false) || e.action == "static") return e;
   const auto pace = pace_of_traffic_behind(e);
   // Not faster than a road allows: fast city traffic, or the ego's own pace on a motorway.
@@ -126,21 +142,29 @@ std::optional<double> Planner::pace_of_traffic_behind(const Evaluated& e) const 
   return std::nullopt;
 }
 
-Evaluated Planner::evaluate_at(const Candidate& c, double speed) const {
+Evaluated Planner::evaluate_at(const Candidate& c, double speed, double wait_s, int join_side) const {
   Evaluated e;
   e.speed = speed;
+  e.waits_s = wait_s;
   Manoeuvre mv;
   mv.action = c.parked ? "static" : m_.action.value_or("straight");
+  mv.join_side = join_side;
   if (const auto why = manoeuvre(c, e.speed, mv)) return invalid(e, *why);
   std::string& action = mv.action;
   const Path& path = mv.path;
   const auto& connector = mv.connector;
   const bool reverse_yaw = mv.reverse_yaw;
-  const auto free_arc = arc_lengths_at(path, e.speed, times_, bend_accel());
+  auto free_arc = arc_lengths_at(path, e.speed, times_, bend_accel());
+  if (wait_s > 0) {  // standing at the start, then off from rest
+    std::vector<double> after(times_.size());
+    for (size_t f = 0; f < times_.size(); ++f) after[f] = std::max(0.0, times_[f] - wait_s);
+    free_arc = arc_lengths_at(path, e.speed, after, bend_accel(), 2.5, true);
+  }
   // Most starts of a turn far from its junction end here, before the steering is simulated.
   if (turn_out_of_reach(path, free_arc, action)) return invalid(e, *turn_missing(action));
   const bool follows = action != "static" && !reverse_yaw;
   e.poses = poses_along(path, follows ? follow_traffic(path, free_arc, e) : free_arc, action, reverse_yaw);
+  if (wait_s > 0) e.slowed_to = -1;  // standing at the mouth by choice, not held up
   if (const auto why = action_missing(e.poses, action)) {
     // Held up behind traffic the action would not happen: plan it free, and let the collision
     // check say whom it meets.

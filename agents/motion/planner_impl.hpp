@@ -77,6 +77,7 @@ struct Evaluated {
   double slowed_to = -1;     // >= 0: traffic ahead holds it to this mean speed (m/s), well below the asked one
   double slow_penalty = 0;   // added to the candidate's score for the speed lost behind traffic
   std::string crosses_pedestrian;  // a pedestrian's recorded path runs through it (said in a note)
+  double waits_s = 0;        // stands at its start this long, then sets off from rest (a gap to join)
 };
 
 inline int legal_dir(const scene::Lane& lane) { return lane.direction == scene::TrafficDirection::Backward ? -1 : 1; }
@@ -87,6 +88,7 @@ struct Manoeuvre {
   Path path;
   std::vector<Eigen::Vector2d> connector;  // a turn's junction curve: on the road even where unmapped
   bool reverse_yaw = false;                // backing up: the body faces against the path
+  int join_side = 0;                       // joining a road: +1 turn left, -1 right, 0 left where it can
 };
 
 class Planner {
@@ -102,8 +104,9 @@ class Planner {
   bool nothing_said_about_motion() const;
   bool wants_parked(bool on_parking) const;
   bool same_way_as_ego(int lane, double s) const;
-  double lane_hint_penalty(int lane, double s) const;   // the lane said and the lane's use said
-  double said_lane_penalty(int lane, double s) const;
+  // The lane said and the lane's use said, for a start travelling dir (0: the lane's legal way).
+  double lane_hint_penalty(int lane, double s, int dir = 0) const;
+  double said_lane_penalty(int lane, double s, int dir = 0) const;
   std::string lane_said() const;  // for notes: "bus", "left", "inner"
   std::vector<double> lane_edge_penalties() const;
 
@@ -122,7 +125,7 @@ class Planner {
   void beside_in_row(int lane, double s0, int dir, int side, std::vector<Candidate>& out) const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
-  Evaluated evaluate_at(const Candidate& c, double speed) const;
+  Evaluated evaluate_at(const Candidate& c, double speed, double wait_s = 0, int join_side = 0) const;
   std::optional<double> pace_of_traffic_behind(const Evaluated& e) const;
   std::optional<std::string> manoeuvre(const Candidate& c, double& speed, Manoeuvre& m) const;
 

@@ -195,19 +195,28 @@ std::vector<LaneCrossing> LaneMap::junctions(int index, double reach) const {
   std::vector<LaneCrossing> out;
   const Lane& self = lanes_.at(size_t(index));
   const double self_len = self.length();
-  // Arc length where legal travel on a lane starts and ends.
-  const auto travel_start = [](const Lane& l) { return l.direction == TrafficDirection::Backward ? l.length() : 0.0; };
-  const auto travel_end = [](const Lane& l) { return l.direction == TrafficDirection::Backward ? 0.0 : l.length(); };
+  // Arc lengths where legal travel on a lane starts and ends: a lane used both ways (a driveway,
+  // a car park aisle) starts and ends at either end.
+  const auto travel_starts = [](const Lane& l) -> std::vector<double> {
+    if (l.direction == TrafficDirection::Both) return {0.0, l.length()};
+    return {l.direction == TrafficDirection::Backward ? l.length() : 0.0};
+  };
+  const auto travel_ends = [](const Lane& l) -> std::vector<double> {
+    if (l.direction == TrafficDirection::Both) return {0.0, l.length()};
+    return {l.direction == TrafficDirection::Backward ? 0.0 : l.length()};
+  };
   const auto inside = [&](const LanePosition& p, double len) { return p.s > 0.5 && p.s < len - 0.5 && std::abs(p.lateral) <= reach; };
   for (size_t o = 0; o < lanes_.size(); ++o) {
     if (int(o) == index) continue;
     const Lane& other = lanes_[o];
-    const double start = travel_start(other);
-    const auto onto_self = project(index, point_at(int(o), start));
-    if (inside(onto_self, self_len)) out.push_back({int(o), onto_self.s, start});
-    const double self_end = travel_end(self);
-    const auto onto_other = project(int(o), point_at(index, self_end));
-    if (inside(onto_other, other.length())) out.push_back({int(o), self_end, onto_other.s});
+    for (const double start : travel_starts(other)) {
+      const auto onto_self = project(index, point_at(int(o), start));
+      if (inside(onto_self, self_len)) out.push_back({int(o), onto_self.s, start});
+    }
+    for (const double self_end : travel_ends(self)) {
+      const auto onto_other = project(int(o), point_at(index, self_end));
+      if (inside(onto_other, other.length())) out.push_back({int(o), self_end, onto_other.s});
+    }
   }
   std::sort(out.begin(), out.end(), [](const LaneCrossing& a, const LaneCrossing& b) { return a.s_self < b.s_self; });
   return out;

@@ -96,3 +96,34 @@ TEST(SpecAndPlace, AheadInALaneToTheSideIsInFront) {
   const double x = start(added[0])["x"].get<double>(), y = start(added[0])["y"].get<double>();
   EXPECT_LE(std::abs(std::atan2(y, x)) * 180 / std::numbers::pi, 25) << x << ", " << y;
 }
+
+TEST(SpecAndPlace, ACarAheadOnARoadThatEndsAtATGoesRoundTheCorner) {
+  LayoutChat road("blind-giveway");  // the ego's lane ends 44 m ahead at a four-lane main road
+  const auto added = road("a", "remove the bicycle and add a red car 20 m ahead")["added"];
+  ASSERT_EQ(added.size(), 1u);
+  const auto& t = added[0]["trajectory"];
+  EXPECT_LT(t[t.size() - 1]["y"].get<double>(), -10) << added[0]["intent"];  // turned onto the main road
+  EXPECT_EQ(added[0]["intent"]["action"], "turn_right");
+  // Where the road goes on, it goes straight on.
+  LayoutChat dev("blind-avenue");
+  const auto straight = dev("a", "add a red car 20 m ahead")["added"];
+  ASSERT_EQ(straight.size(), 1u);
+  EXPECT_EQ(straight[0]["intent"]["action"], "straight");
+}
+
+TEST(SpecAndPlace, PullingOutOfASideLaneWaitsForAGapAndLeavesFromItsMouth) {
+  LayoutChat arterial("blind-twltl");  // the mall driveway meets a busy arterial
+  const auto state = arterial("a", "add a car pulling out of the mall driveway");
+  ASSERT_EQ(state["added"].size(), 1u);
+  EXPECT_EQ(state["added"][0]["intent"]["lane"], "mall_driveway");
+  const auto notes = state["notes"].dump();
+  EXPECT_NE(notes.find("waits"), std::string::npos) << notes;
+  // A cross street that runs on across the road: its lane toward the road, not beyond it.
+  LayoutChat cross("blind-crossroads");
+  const auto out = cross("a", "add a car pulling out of the side street on the right")["added"];
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_LT(start(out[0])["y"].get<double>(), -3) << out[0]["intent"];  // starts on the right, in the side street
+  // The one standing at a driveway's mouth, waiting to leave, is the one meant.
+  EXPECT_EQ(removed(arterial("b", "delete the car waiting to leave the gas station")),
+            (std::vector<std::string>{"obj_8"}));
+}

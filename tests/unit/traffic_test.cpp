@@ -144,3 +144,14 @@ TEST(Traffic, MotionWordsThatHangOnOtherPhrases) {
   EXPECT_FALSE(motion::parse_motion("a car at 900 km/h").problems.empty());
   EXPECT_NEAR(motion::parse_motion("a coach at 50 kilometres per hour").speed_mps.value_or(0), 50 / 3.6, 1e-9);
 }
+
+TEST(Traffic, ALaneUsedBothWaysMeetsTheRoadAtEitherEnd) {
+  const auto s = layout("blind-twltl");  // the mall driveway is drawn from the road outward, used both ways
+  const int driveway = s.lanes.find("mall_driveway"), kerb = s.lanes.find("east_kerb");
+  ASSERT_GE(driveway, 0);
+  ASSERT_GE(kerb, 0);
+  bool meets_at_mouth = false;  // driving out of it (toward its start), its travel ends at the road
+  for (const auto& j : s.lanes.junctions(driveway, 12.0))
+    meets_at_mouth = meets_at_mouth || (j.other == kerb && j.s_self < 0.5);
+  EXPECT_TRUE(meets_at_mouth);
+}
