@@ -17,6 +17,7 @@ import math
 import layouts_v21
 import layouts_v23
 import layouts_v24
+import layouts_v25
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -408,3 +409,4 @@ if __name__ == "__main__":
     layouts_v21.main()
     layouts_v23.main()
     layouts_v24.main()
+    layouts_v25.main()
