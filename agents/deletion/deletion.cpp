@@ -184,6 +184,10 @@ void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention
   else if (text::has_any(p, {"farthest", "furthest", "far", "most distant"})) s.order = "farthest";
   // "the last parked car", "the second to last truck": counted from the far end of the row.
   else if (text::has_any(p, {"last", "penultimate", "final"})) s.order = "farthest";
+  // "the largest vehicle", "the smallest car": by the size of its box.
+  if (text::has_any(p, {"largest", "biggest", "longest", "tallest", "bulkiest", "heaviest"})) s.order = "largest";
+  else if (text::has_any(p, {"smallest", "tiniest", "shortest", "littlest"})) s.order = "smallest";
+  if (s.order == "largest" || s.order == "smallest") s.quantity = "one";
   if (text::has_any(p, {"penultimate"})) {
     s.nth = 2;
     s.quantity = "one";
@@ -273,6 +277,15 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
     s.lane = "ego";
     s.region = "back";
   }
+  // "the truck I'm merging behind", "the car we are following": the ego is behind it, it is ahead.
+  for (size_t i = 0; i + 1 < p.size() && !s.of_previous; ++i) {
+    const bool ego_subject = p[i] == "im" || (p[i] == "i" && p[i + 1] == "am") || (p[i] == "we" && p[i + 1] == "are");
+    for (size_t k = i + 1; ego_subject && k < std::min(p.size(), i + 5); ++k)
+      if (p[k] == "behind" || p[k] == "following" || p[k] == "tailing") {
+        p[k] = "ahead";
+        break;
+      }
+  }
   // "the left lane" names a lane, not a side: the side words only count outside a lane phrase.
   const bool side_is_lane = s.lane == "left" || s.lane == "right";
   if (s.of_previous) {
@@ -291,6 +304,13 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
     s.moving = true;
   // "the row of bays on the left", "the cars in the spaces": what stands in a bay is parked.
   s.parked = text::has_any(p, {"parked", "parking", "bay", "bays", "spaces", "spots", "parking space"});
+  // "the van that's double parked", "the car blocking my lane": standing in a lane of traffic.
+  if (text::has_any(p, {"double parked", "blocking", "stopped in the road", "stopped in the street",
+                        "in the middle of the road", "in the middle of the street", "stranded in"})) {
+    s.moving = false;
+    s.parked = false;
+    if (!s.lane) s.lane = "road";
+  }
   read_distance_bounds(p, s);
   read_order_and_count(p, types, s);
   return s;

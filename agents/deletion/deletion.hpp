@@ -30,7 +30,7 @@ struct Selector {
   std::optional<double> beyond_m;       // "more than 30 m away": at least this far
   std::string quantity = "one";         // one, all, n
   int n = 1;
-  std::optional<std::string> order;     // nearest, farthest
+  std::optional<std::string> order;     // nearest, farthest, largest, smallest (by box volume)
   int nth = 1;                          // with order: the nth nearest/farthest
 };
 

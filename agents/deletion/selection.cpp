@@ -111,7 +111,8 @@ void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::ve
       if (c->object->has_category_prefix("vehicle.truck")) return size.x() <= 6.5 && size.z() <= 2.3;
       return c->object->has_category_prefix("vehicle.car") && size.x() >= 5.0 && size.z() <= 2.0;
     };
-    if (std::any_of(m.begin(), m.end(), pickup_sized)) std::erase_if(m, [&](const Candidate* c) { return !pickup_sized(c); });
+    if (std::any_of(m.begin(), m.end(), pickup_sized))
+      std::erase_if(m, [&](const Candidate* c) { return !pickup_sized(c); });
     else std::erase_if(m, [](const Candidate* c) { return !c->object->has_category_prefix("vehicle.truck"); });
   }
   if (m.empty() && t.category == "vehicle.truck") widen_to({"vehicle.trailer", "vehicle.construction"});
@@ -155,6 +156,12 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
     else if (van && !cars.empty()) m = cars;
   }
   if (t.order == "farthest") std::reverse(m.begin(), m.end());
+  if (t.order == "largest" || t.order == "smallest") {
+    const auto volume = [](const Candidate* c) { return c->object->size_lwh.prod(); };
+    std::stable_sort(m.begin(), m.end(), [&](const Candidate* a, const Candidate* b) {
+      return t.order == "largest" ? volume(a) > volume(b) : volume(a) < volume(b);
+    });
+  }
   // "the car behind me": the one most nearly straight behind (or ahead), then the nearest.
   if (!t.order && t.quantity == "one" && (t.region == "front" || t.region == "back"))
     std::stable_sort(m.begin(), m.end(), [](const Candidate* a, const Candidate* b) {

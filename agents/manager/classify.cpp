@@ -112,6 +112,11 @@ bool classify_whole(const Words& c, Instruction& in) {
     if (!mentions_vehicle(c) && has_any(c, {"scene", "whole", "entire", "everything", "picture", "frame", "view"})) {
       in.kind = "delete";
       in.text = "remove all vehicles";
+      // "clear everything coming the other way": every vehicle that does what follows.
+      const size_t every = text::find_any(c, {"everything", "anything"});
+      if (every != std::string::npos && every + 1 < c.size() &&
+          !has_any(Words(c.begin() + long(every) + 1, c.end()), {"scene", "picture", "frame", "view", "shot"}))
+        in.text += " " + text::join(c, every + 1);
       return true;
     }
   }
@@ -221,8 +226,7 @@ Words fill_addition(const Words& c) {
   const auto area = language::find_lane_name(c);
   if (link == std::string::npos && (c[0] == "fill" || c[0] == "pack") &&
       ((area && area->use == "car_park") ||
-       text::has_any(c, {"parking lane", "parking lanes", "parking spaces", "parking spots", "parking bays", "the bays",
-                         "the spaces"}))) {
+       text::has_any(c, {"parking", "bays", "bay", "spaces", "spots", "stalls"}))) {  // "fill the empty bays"
     Words out{"add", "a", "row", "of", "parked", "cars", "in"};
     out.insert(out.end(), c.begin() + (c[1] == "up" ? 2 : 1), c.end());
     return out;
@@ -276,15 +280,17 @@ bool starts_with(const Words& c, const std::vector<std::string>& verbs) {
 // A deletion, said by its verb or its result ("I'd like the bus gone").
 bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction& in) {
   const std::string& first = c.front();
-  // "I'd like the bus gone", "I want the red car removed", "I don't want the van in the shot": a
-  // deletion said by its result.
+  // "I'd like the bus gone", "I want the red car removed", "I don't want the van in the shot",
+  // "what if the bus wasn't there?": a deletion said by its result.
   const bool everything = has_any(c, {"everything", "anything", "every vehicle", "all the vehicles", "all vehicles"});
   if ((vehicle || everything) && !starts_with(c, add_verbs()) &&
       has_any(c, {"gone", "removed", "deleted", "erased", "out of the way", "out of the picture", "out of the scene",
                   "out of the shot", "out of shot", "don't want", "dont want", "do not want", "don't need",
                   "rather not have", "rather not see", "prefer not to have", "prefer not to see",
                   "do not need", "no longer want", "not want", "has to go", "have to go", "must go", "should go",
-                  "needs to go", "can go", "got to go", "has got to go"})) {
+                  "needs to go", "can go", "got to go", "has got to go", "wasnt there", "werent there",
+                  "was not there", "were not there", "wasnt here", "werent here", "not there anymore", "didnt exist",
+                  "did not exist", "disappeared", "vanished"})) {
     in.kind = added_ref ? "remove_added" : "delete";
     in.target = added_ref ? in.text : "";
     in.text = "remove " + in.text;

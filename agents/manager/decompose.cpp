@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <optional>
+#include <regex>
 
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
@@ -92,7 +94,11 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
       // "... and have the ego drive slowly", "... and let it turn left": a new instruction too.
       const bool have_object = j + 1 < w.size() && (w[j] == "have" || w[j] == "let") &&
                                (w[j + 1] == "the" || w[j + 1] == "it" || w[j + 1] == "them" || w[j + 1] == "ego");
-      if (j < w.size() && (starts_instruction(w[j]) || have_object || (comma_before[i] && names_new_part(w, j)))) {
+      // "... and drive the camera 10 m forward", "and bring the view down": any verb on the camera.
+      const bool camera_object = j + 2 < w.size() && (w[j + 1] == "the" || w[j + 1] == "my" || w[j + 1] == "our") &&
+                                 (w[j + 2] == "camera" || w[j + 2] == "view" || w[j + 2] == "viewpoint");
+      if (j < w.size() &&
+          (starts_instruction(w[j]) || have_object || camera_object || (comma_before[i] && names_new_part(w, j)))) {
         split = true;
         i = j - 1;  // drop the connector words
       }
@@ -137,7 +143,9 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
       }
       const bool filler = !c.empty() && std::any_of(std::begin(fillers), std::end(fillers),
                                                     [&](const char* f) { return c.front() == f; });
-      if (filler || (!c.empty() && c.front() == "no" && !mentions_vehicle(c))) {
+      // "please to remove the car": an infinitive's "to" before the verb says nothing.
+      const bool infinitive = c.size() > 1 && c.front() == "to" && starts_instruction(c[1]);
+      if (filler || infinitive || (!c.empty() && c.front() == "no" && !mentions_vehicle(c))) {
         c.erase(c.begin());
         again = true;
       }
@@ -325,12 +333,56 @@ std::string without_self_corrections(std::string command) {
   return command;
 }
 
+// "Don't touch the trucks, but get rid of every car on the left": what is not to be touched is
+// an exception to what follows "but" ("get rid of every car on the left except the trucks").
+std::string negation_as_exception(const std::string& sentence) {
+  static const std::regex kNegated(
+      R"(^\s*(?:please\s+)?(?:don'?t|do not|never)\s+)"
+      R"((?:touch|remove|delete|erase|move|change|get rid of|take out|take away)\s+)"
+      R"((.+?)\s*,?\s+but\s+(?:please\s+)?(.+)$)",
+      std::regex::icase);
+  std::smatch m;
+  if (!std::regex_match(sentence, m, kNegated)) return sentence;
+  return m[2].str() + " except " + m[1].str();
+}
+
+// "the white van has broken down and a tow truck is parked behind it": a clause saying how a
+// vehicle already there is ("the ... has / is ...") asks for nothing when a later clause calls it
+// "it"; that "it" is the vehicle. Returns the noun phrase.
+std::optional<Words> described_vehicle(const Words& c) {
+  if (c.size() < 3 || c.front() != "the") return std::nullopt;
+  const auto types = lexicon::find_types(c);
+  if (types.empty() || types.front().type.living()) return std::nullopt;
+  const size_t end = types.front().end;
+  static const char* kStates[] = {"has", "is", "was", "had", "gets", "got", "just"};
+  const auto is_state = [&](const char* x) { return c[end] == x; };
+  if (end >= c.size() || std::none_of(std::begin(kStates), std::end(kStates), is_state)) return std::nullopt;
+  return Words(c.begin(), c.begin() + long(end));
+}
+
+// The sentence without such a clause (up to its "and"), "it" after it replaced by the vehicle.
+void resolve_description(Words& w, std::vector<bool>& comma) {
+  const auto described = described_vehicle(w);
+  if (!described) return;
+  const auto and_at = std::find(w.begin() + long(described->size()), w.end(), "and");
+  const auto it_at = std::find(and_at, w.end(), "it");
+  if (and_at == w.end() || it_at == w.end()) return;
+  const long it = it_at - w.begin(), cut = and_at - w.begin() + 1;
+  w.erase(w.begin() + it);
+  w.insert(w.begin() + it, described->begin(), described->end());
+  comma.erase(comma.begin() + it);
+  comma.insert(comma.begin() + it, described->size(), false);
+  w.erase(w.begin(), w.begin() + cut);
+  comma.erase(comma.begin(), comma.begin() + cut);
+}
+
 }  // namespace
 
 std::vector<Instruction> decompose(const std::string& command_in) {
   std::vector<Instruction> out;
   const std::string command = without_self_corrections(spec_as_sentence(command_in).value_or(command_in));
-  for (const auto& sentence : sentences(command)) {
+  for (const auto& said : sentences(command)) {
+    const std::string sentence = negation_as_exception(said);
     if (const size_t colon = sentence.find(':'); colon != std::string::npos) {
       const auto parts = titled(sentence, colon);
       out.insert(out.end(), parts.begin(), parts.end());
@@ -341,6 +393,7 @@ std::vector<Instruction> decompose(const std::string& command_in) {
     words_with_commas(sentence, w, comma);
     lexicon::correct_typos(w);
     std::string previous;
+    resolve_description(w, comma);
     for (const auto& c : clauses(w, comma)) {
       Instruction in = classify(c);
       // "raise the camera 2 m and move it 1 m left", "... and drop it 0.3 m": "it" is the camera

@@ -395,6 +395,11 @@ bool Manager::replan_revised(Conversation& c, int t, const json& said, const std
     keep.erase("distance_change_m");
     keep.erase("relative");
   }
+  if (said.contains("distance_factor")) {  // "twice as far away"
+    keep["distance_m"] = v.resolved.value("distance_m", 0.0) * said["distance_factor"].get<double>();
+    keep.erase("distance_factor");
+    keep.erase("relative");
+  }
   // Same place unless told otherwise: a revision of how it moves keeps where it starts.
   const bool place_said = keep.contains("placement") || keep.contains("relative") || keep.contains("distance_m");
   const bool keeps_start = !place_said && !v.intent.contains("relative") && v.resolved.contains("distance_m");

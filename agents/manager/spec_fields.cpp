@@ -57,10 +57,11 @@ std::vector<std::string> segments(const std::string& s) {
 
 // "ego lane" is my lane, "same as ego" the same way as me: the words the rest of the manager reads.
 std::string in_plain_words(std::string v) {
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"ego lane", "my lane"}, {"ego's lane", "my lane"}, {"ego vehicle", "me"}, {"the ego", "me"}, {"ego", "me"}}) {
-    for (size_t at = v.find(from); at != std::string::npos; at = v.find(from, at + to.size())) v.replace(at, from.size(), to);
-  }
+  static const std::vector<std::pair<std::string, std::string>> kEgo{
+      {"ego lane", "my lane"}, {"ego's lane", "my lane"}, {"ego vehicle", "me"}, {"the ego", "me"}, {"ego", "me"}};
+  for (const auto& [from, to] : kEgo)
+    for (size_t at = v.find(from); at != std::string::npos; at = v.find(from, at + to.size()))
+      v.replace(at, from.size(), to);
   return v;
 }
 

@@ -74,6 +74,7 @@ nlohmann::json to_json(const MotionIntent& m) {
   util::put_optional(j, "chase", m.chase);
   util::put_optional(j, "overtake", m.overtake);
   util::put_optional(j, "distance_change_m", m.distance_change_m);
+  util::put_optional(j, "distance_factor", m.distance_factor);
   if (!m.problems.empty()) j["problems"] = m.problems;
   return j;
 }
@@ -99,6 +100,7 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   util::get_optional(j, "chase", m.chase);
   util::get_optional(j, "overtake", m.overtake);
   util::get_optional(j, "distance_change_m", m.distance_change_m);
+  util::get_optional(j, "distance_factor", m.distance_factor);
   if (j.contains("problems")) m.problems = j["problems"].get<std::vector<std::string>>();
   return m;
 }

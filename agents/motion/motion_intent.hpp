@@ -19,6 +19,7 @@ struct MotionIntent {
   std::optional<std::string> placement;   // front, left_front, right_front, left, right, back
   std::optional<double> distance_m;
   std::optional<double> distance_change_m;  // "10 m further away": added to the distance it has (revisions)
+  std::optional<double> distance_factor;    // "twice as far away": times the distance it has (revisions)
   std::optional<std::string> distance_word;  // close, far, end ("at the far end of the street")
   std::optional<std::string> lane;        // ego, left, right, oncoming, parking
   std::optional<std::string> lane_use;    // bus, turn, turn_left, turn_right, cycle, tram, taxi, hov, car_park

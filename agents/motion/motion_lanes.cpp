@@ -90,6 +90,16 @@ std::optional<std::string> lane_change_to(Words& w) {
         w[j] = w[j + 1] = "_";
         return std::string("lane_change_ego");
       }
+      // "into the kerb lane", "over to the fast lane": the side is the road's to say (planner).
+      static const std::pair<const char*, const char*> kEdges[] = {
+          {"curb", "kerb"}, {"slow", "kerb"}, {"inside", "kerb"}, {"nearside", "kerb"},
+          {"fast", "median"},  {"passing", "median"}, {"overtaking", "median"}, {"outside", "median"},
+          {"offside", "median"}};
+      for (const auto& [word, edge] : kEdges)
+        if (w[j] == word && w[j + 1] == "lane") {
+          w[j] = w[j + 1] = "_";
+          return "lane_change_" + std::string(edge);
+        }
       if (std::find(std::begin(links), std::end(links), w[j]) == std::end(links)) break;
     }
   }

@@ -230,6 +230,14 @@ namespace {
 // The first distance said, as a new distance, a change of it, or a problem; returns whether
 // it was followed by "ahead" (so a side placement lies ahead on that side).
 bool find_distance(const Words& w, MotionIntent& m) {
+  // "twice as far away", "half the distance": a multiple of the distance it has.
+  for (const auto& [phrase, factor] : {std::pair{"twice as far", 2.0}, std::pair{"double the distance", 2.0},
+                                       std::pair{"three times as far", 3.0}, std::pair{"triple the distance", 3.0},
+                                       std::pair{"half as far", 0.5}, std::pair{"half the distance", 0.5}})
+    if (text::has_phrase(w, phrase)) {
+      m.distance_factor = factor;
+      return false;
+    }
   for (const auto& q : text::quantities(w, {"meters", "meter", "m", "feet", "foot", "ft", "yards", "yard", "km",
                                             "kilometers", "kilometer", "miles", "mile"})) {
     // "50 kilometers per hour" is a speed (find_speed), not a distance.
@@ -347,6 +355,7 @@ MotionIntent parse_motion(const std::string& instruction) {
     m.lane_use = name->use;
     for (size_t k = name->begin; k < name->end; ++k) w[k] = "_";
   }
+  const auto change_to = lane_change_to(w);  // first: "change into the kerb lane" names a target, not a start
   m.lane_edge = find_lane_edge(w);
   m.relative = find_place_of(w);
   if (!m.relative) m.relative = find_relative(w);
@@ -354,7 +363,6 @@ MotionIntent parse_motion(const std::string& instruction) {
                                                        "tailing", "pursuing"}))
     m.chase = true;
   const bool ahead_distance = find_distance(w, m);
-  const auto change_to = lane_change_to(w);
   const bool turning = has_any(w, {"turn", "turns", "turning"});
   const auto target_side = blank_turn_targets(w, turning);
   const auto junction = turning ? std::nullopt : language::blank_junction_place(w);
@@ -362,8 +370,10 @@ MotionIntent parse_motion(const std::string& instruction) {
   if (junction && *junction != "near") m.junction = junction;
   m.lane = find_lane(w);
   if (!m.relative) m.placement = placement_without_lane_words(w, ahead_distance);
-  // By a junction ahead: on that side ahead, not level with the ego.
-  if (by_junction && (m.placement == "left" || m.placement == "right")) m.placement = *m.placement + "_front";
+  // By a junction ahead, or "on my right just ahead": on that side ahead, not level with the ego.
+  if ((by_junction || has_any(w, {"just ahead", "up ahead", "a bit ahead", "a little ahead", "slightly ahead"})) &&
+      (m.placement == "left" || m.placement == "right"))
+    m.placement = *m.placement + "_front";
   // "in the right lane alongside me": level with the ego, on the lane's side.
   if (!m.relative && !ahead_distance && (!m.placement || m.placement == "front") &&
       has_any(w, {"alongside me", "alongside us", "beside me", "beside us", "next to me", "next to us", "level with me",
@@ -374,8 +384,9 @@ MotionIntent parse_motion(const std::string& instruction) {
       has_any(w, {"following me", "following us", "follows me", "follows us", "follow me", "tailing me", "tailing us",
                   "tailgating me", "tailgating us", "on my tail", "on our tail", "chasing me", "chasing us"}))
     m.placement = "back";
-  if (has_any(w, {"close front", "close to me", "near me", "nearby", "right in front", "just ahead", "close behind",
-                  "close", "near"}))
+  if (m.distance_factor) {  // "twice as far": how far is said by the factor
+  } else if (has_any(w, {"close front", "close to me", "near me", "nearby", "right in front", "just ahead",
+                         "close behind", "close", "near"}))
     m.distance_word = "close";
   else if (has_any(w, {"far end", "other end", "end of the road", "end of the street", "end of the aisle",
                        "end of the lane", "end of the car park", "end of the block"}))
@@ -398,8 +409,10 @@ MotionIntent parse_motion(const std::string& instruction) {
   // "coming down the road from the right": crossing traffic, on a road across the ego's ahead,
   // driving toward the ego's path (not beside the ego, nor behind it in its lane).
   if (!m.relative && !m.lane && !m.action &&
-      has_any(w, {"from the right", "from my right", "from our right", "from the left", "from my left", "from our left"}) &&
-      has_any(w, {"coming", "comes", "approaching", "approaches", "driving", "drives", "heading", "crossing", "crosses"}) &&
+      has_any(w, {"from the right", "from my right", "from our right", "from the left", "from my left",
+                  "from our left"}) &&
+      has_any(w, {"coming", "comes", "approaching", "approaches", "driving", "drives", "heading", "crossing",
+                  "crosses"}) &&
       !has_any(w, {"behind", "lane", "overtake", "overtaking", "passing"})) {
     m.lane = "cross";
     if (!m.direction) m.direction = "toward";

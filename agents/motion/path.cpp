@@ -238,8 +238,19 @@ std::optional<RoadEndTurn> turn_where_lane_ends(const scene::LaneMap& map, int l
                                                  double length) {
   const auto& l = map.lanes()[size_t(lane)];
   const double to_end = dir > 0 ? l.length() - s0 : s0;
-  if (l.type != "driving" || l.closes_on_itself() || to_end > reach || lane_goes_on(map, lane, dir)) return std::nullopt;
+  if (l.type != "driving" || l.closes_on_itself() || to_end > reach || lane_goes_on(map, lane, dir))
+    return std::nullopt;
   const Eigen::Vector2d end = map.point_at(lane, dir > 0 ? l.length() : 0.0);
+  // Most lanes end at the map's edge with no road across: say so before building any turn.
+  const double end_yaw = map.tangent_yaw_at(lane, dir > 0 ? l.length() : 0.0);
+  bool road_across = false;
+  for (size_t i = 0; i < map.lanes().size() && !road_across; ++i) {
+    if (int(i) == lane || map.lanes()[i].type != "driving") continue;
+    const auto pos = map.project(int(i), end);
+    road_across = pos.s > 0 && pos.s < map.lanes()[i].length() && std::abs(pos.lateral) < kJunctionReachM &&
+                  std::abs(std::cos(wrap(pos.tangent_yaw - end_yaw))) < 0.5;
+  }
+  if (!road_across) return std::nullopt;
   std::optional<RoadEndTurn> best;
   double best_gap = 1e9;
   for (const int sign : {-1, 1}) {

@@ -14,6 +14,7 @@ using detail::kPi;
 
 namespace {
 constexpr size_t kMaxCandidates = 150;
+constexpr size_t kMaxWaitingStarts = 4;  // the best starts that met traffic: each may wait for a gap
 }  // namespace
 
 double speed_for(const std::string& word) {
@@ -205,6 +206,7 @@ PlanResult Planner::run_once() {
   // The best-scored starts only: each costs a path, car following and a collision check over the
   // clip, and a request nothing satisfies would otherwise try every lane metre (seconds).
   const size_t limit = std::min<size_t>(cands.size(), kMaxCandidates);
+  std::vector<Candidate> joins_met;  // pulling out, met traffic: may wait for a gap (wait_for_gap)
   for (size_t i = 0; i < limit; ++i) {
     // Sorted by score, and a start costs at least its score: none from here beats the best
     // imperfect one (the same answer the clean-start test below gives, without the evaluation).
@@ -223,6 +225,7 @@ PlanResult Planner::run_once() {
     }
     if (e.first_collision >= 0) {
       if (!best_colliding || e.first_collision > best_colliding->second.first_collision) best_colliding = {cands[i], e};
+      if (m_.action == "join" && !cands[i].parked && joins_met.size() < kMaxWaitingStarts) joins_met.push_back(cands[i]);
       continue;
     }
     if (!e.truncated && e.slowed_to < 0) {
@@ -231,6 +234,8 @@ PlanResult Planner::run_once() {
     }
     if (!best_imperfect || cost({cands[i], e}) < cost(*best_imperfect)) best_imperfect = {cands[i], e};
   }
+  if (!best_imperfect && !joins_met.empty())
+    if (const auto waiting = wait_for_gap(joins_met)) return finish(waiting->first, waiting->second, result);
   if (best_imperfect) {
     const Evaluated& e = best_imperfect->second;
     result = finish(best_imperfect->first, e, result);
@@ -279,7 +284,8 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
   result.ok = true;
   if (!e.crosses_pedestrian.empty())
     result.notes.push_back("the recorded path of " + e.crosses_pedestrian + " runs through it");
-  if (e.waits_s > 0) result.notes.push_back("it waits " + fmt(e.waits_s) + " s for a gap in the traffic, then pulls out");
+  if (e.waits_s > 0)
+    result.notes.push_back("it waits " + fmt(e.waits_s) + " s for a gap in the traffic, then pulls out");
   result.t_s.resize(e.poses.size());
   result.trajectory = e.poses;
   result.lane = scene_.lanes.lanes()[size_t(c.lane)].id;

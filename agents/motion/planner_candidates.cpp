@@ -389,12 +389,15 @@ std::vector<Candidate> Planner::relative_candidates() const {
       }
   } else if (region == "front" || region == "back") {
     const int k = region == "front" ? 1 : -1;
-    for (double gap = base_gap; gap < base_gap + 45; gap += 0.5) {
+    // Ahead of or behind a moving vehicle: a second's headway at its speed (at most 20 m), not
+    // bumper to bumper.
+    const double headway = a.speed_mps > 0.5 ? std::min(a.speed_mps * 1.0, 20.0) : 0.0;
+    for (double gap = base_gap + headway; gap < base_gap + headway + 45; gap += 0.5) {
       const double s = s0 + k * dir * gap;
       if (s < 0 || s > scene_.lanes.lanes()[size_t(lane)].length()) continue;
       const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
                           (a.speed_mps == 0 && nothing_said_about_motion());
-      Candidate c{lane, s, dir, parked, gap - base_gap};
+      Candidate c{lane, s, dir, parked, gap - base_gap - headway};
       out.push_back(c);
     }
   } else if (std::abs(std::sin(wrap(a.start.yaw - scene_.lanes.tangent_yaw_at(lane, s0)))) > 0.7) {

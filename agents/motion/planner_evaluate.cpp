@@ -1,6 +1,7 @@
 #include "agents/motion/planner_impl.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 
@@ -43,6 +44,12 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
   if (m.action == "straight" && speed > 0 && map.lanes()[size_t(c.lane)].for_stopping()) {
     // Moving off a parking lane: it pulls out into the driving lane beside it.
     if (const auto side = pull_out_side(c)) m.action = *side > 0 ? "lane_change_left" : "lane_change_right";
+  }
+  if (m.action == "lane_change_kerb" || m.action == "lane_change_median") {
+    // The fast lane is on the side of the nearest lane running the other way (the left where
+    // traffic keeps right, as assumed with none in reach); the kerb is on the other side.
+    const int median = median_side(c);
+    m.action = (m.action == "lane_change_median") == (median > 0) ? "lane_change_left" : "lane_change_right";
   }
   if (m.action == "lane_change_ego") {
     const double lat = ego_.to_ego(map.point_at(c.lane, c.s)).y();
@@ -90,7 +97,8 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
              " in the same direction to change into";
     m.path = std::move(lc.path);
   } else if (const auto corner = m_.action ? std::nullopt
-                                            : turn_where_lane_ends(map, c.lane, c.s, c.dir, speed * times_.back() - 15, total)) {
+                                            : turn_where_lane_ends(map, c.lane, c.s, c.dir,
+                                                                   speed * times_.back() - 15, total)) {
     // Nothing said about its way and its road ends at a T it reaches and turns at within the
     // clip: round the corner, not off the map.
     m.action = corner->sign > 0 ? "turn_left" : "turn_right";
@@ -103,19 +111,28 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
   return std::nullopt;
 }
 
+// Pulling out into traffic that every start meets: the first of those starts from which, waiting
+// for a gap (recorded traffic cannot make room; 1 s steps up to 80 % of the clip) and setting off
+// from rest either way onto the road, it meets nobody. The shortest wait wins; a way whose turn no
+// longer fits in the clip is not tried with a longer wait.
+std::optional<std::pair<Candidate, Evaluated>> Planner::wait_for_gap(const std::vector<Candidate>& starts) const {
+  std::vector<std::array<bool, 2>> too_late(starts.size(), {false, false});
+  for (double wait = 0; wait <= times_.back() * 0.8; wait += 1)
+    for (size_t k = 0; k < starts.size(); ++k)
+      for (const int side : {1, -1}) {
+        bool& late = too_late[k][side > 0 ? 0 : 1];
+        if (late) continue;
+        Evaluated e = evaluate_at(starts[k], desired_speed(starts[k].parked), wait, side);
+        if (e.valid && e.first_collision < 0) return std::pair{starts[k], e};
+        late = !e.valid;
+      }
+  return std::nullopt;
+}
+
 // With no speed said, a vehicle that faster traffic behind it would run into keeps that
 // traffic's pace instead (recorded vehicles cannot brake for it).
 Evaluated Planner::evaluate(const Candidate& c) const {
   Evaluated e = evaluate_at(c, desired_speed(c.parked));
-  // Pulling out into traffic it would meet: it waits at the mouth for a gap (recorded traffic
-  // cannot make room), up to most of the clip.
-  // Either way onto the road, whichever has a gap first.
-  if (e.first_collision >= 0 && m_.action == "join" && !c.parked)
-    for (double wait = 0; wait <= times_.back() * 0.8; wait += 1)
-      for (const int side : {1, -1}) {
-        Evaluated waiting = evaluate_at(c, e.speed, wait, side);
-        if (waiting.valid && waiting.first_collision < 0) return waiting;
-      }
   if (e.first_collision < 0 || m_.speed || m_.speed_mps || m_.chase.value_or(false) || e.action == "static") return e;
   const auto pace = pace_of_traffic_behind(e);
   // Not faster than a road allows: fast city traffic, or the ego's own pace on a motorway.
@@ -205,6 +222,27 @@ Evaluated Planner::evaluate_at(const Candidate& c, double speed, double wait_s, 
       break;
     }
   return e;
+}
+
+// The side (+1 left, -1 right) of the nearest driving lane within 25 m running against a
+// candidate's way; +1 with none (traffic keeping right).
+int Planner::median_side(const Candidate& c) const {
+  const auto& map = scene_.lanes;
+  const Eigen::Vector2d p = map.point_at(c.lane, c.s);
+  const double yaw = map.tangent_yaw_at(c.lane, c.s) + (c.dir > 0 ? 0 : kPi);
+  const Eigen::Vector2d left(-std::sin(yaw), std::cos(yaw));
+  double best = 25.0;
+  int side = 1;
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    if (map.lanes()[i].type != "driving" || int(i) == c.lane) continue;
+    const auto pos = map.project(int(i), p);
+    if (std::abs(pos.lateral) >= best || pos.s <= 0 || pos.s >= map.lanes()[i].length() ||
+        std::cos(wrap(map.travel_yaw_at(int(i), pos.s) - yaw)) > -0.7)
+      continue;
+    best = std::abs(pos.lateral);
+    side = left.dot(map.point_at(int(i), pos.s) - p) > 0 ? 1 : -1;
+  }
+  return side;
 }
 
 // The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that

@@ -128,6 +128,8 @@ class Planner {
   Evaluated evaluate_at(const Candidate& c, double speed, double wait_s = 0, int join_side = 0) const;
   std::optional<double> pace_of_traffic_behind(const Evaluated& e) const;
   std::optional<std::string> manoeuvre(const Candidate& c, double& speed, Manoeuvre& m) const;
+  int median_side(const Candidate& c) const;  // +1: the other way's traffic is on the left
+  std::optional<std::pair<Candidate, Evaluated>> wait_for_gap(const std::vector<Candidate>& starts) const;
 
   // The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that
   // runs the way the candidate faces.

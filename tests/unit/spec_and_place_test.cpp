@@ -122,7 +122,9 @@ TEST(SpecAndPlace, PullingOutOfASideLaneWaitsForAGapAndLeavesFromItsMouth) {
   LayoutChat cross("blind-crossroads");
   const auto out = cross("a", "add a car pulling out of the side street on the right")["added"];
   ASSERT_EQ(out.size(), 1u);
-  EXPECT_LT(start(out[0])["y"].get<double>(), -3) << out[0]["intent"];  // starts on the right, in the side street
+  // On the right, on the cross street's lane toward the road (not on the ego's road).
+  EXPECT_LT(start(out[0])["y"].get<double>(), -2) << out[0]["intent"];
+  EXPECT_EQ(out[0]["intent"]["lane"].get<std::string>().rfind("north", 0), 0u) << out[0]["intent"];
   // The one standing at a driveway's mouth, waiting to leave, is the one meant.
   EXPECT_EQ(removed(arterial("b", "delete the car waiting to leave the gas station")),
             (std::vector<std::string>{"obj_8"}));
