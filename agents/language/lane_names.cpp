@@ -117,41 +117,33 @@ std::optional<std::string> blank_junction_place(std::vector<std::string>& w) {
 
 namespace {
 
-// Whether a driving lane runs beside parking lane `bay` (within `reach` of its middle), of the
-// kind asked: a road's lane (one way) or a car park's aisle (both ways).
-bool driving_lane_beside(const scene::LaneMap& map, int bay, double reach, bool two_way) {
-  const auto& lane = map.lanes()[size_t(bay)];
-  const Eigen::Vector2d mid = map.point_at(bay, lane.length() / 2);
-  for (size_t i = 0; i < map.lanes().size(); ++i) {
-    const auto& other = map.lanes()[i];
-    if (other.type != "driving" || (other.direction == scene::TrafficDirection::Both) != two_way) continue;
-    const auto pos = map.project(int(i), mid);
-    if (pos.s > 0 && pos.s < other.length() && std::abs(pos.lateral) < reach) return true;
-  }
-  return false;
+// Whether `lane` runs beside the middle of parking lane `bay`, within the bay's half width + 4.5 m.
+bool runs_beside(const scene::LaneMap& map, int lane, int bay) {
+  const auto& b = map.lanes()[size_t(bay)];
+  const auto pos = map.project(lane, map.point_at(bay, b.length() / 2));
+  return pos.s > 0 && pos.s < map.lanes()[size_t(lane)].length() && std::abs(pos.lateral) < b.width / 2 + 4.5;
 }
+
+bool two_way(const scene::Lane& l) { return l.direction == scene::TrafficDirection::Both; }
 
 // A car park the ids do not name: bays along two-way aisles and not along a road's lanes, and
 // those aisles.
 std::vector<int> car_park_by_shape(const scene::LaneMap& map) {
-  std::vector<int> bays, out;
-  for (size_t i = 0; i < map.lanes().size(); ++i) {
-    const auto& l = map.lanes()[i];
-    if (l.type != "parking") continue;
-    const double reach = l.width / 2 + 4.5;
-    if (driving_lane_beside(map, int(i), reach, true) && !driving_lane_beside(map, int(i), reach, false))
+  const auto& lanes = map.lanes();
+  const auto driving_beside = [&](int bay, bool aisle) {
+    for (size_t i = 0; i < lanes.size(); ++i)
+      if (lanes[i].type == "driving" && two_way(lanes[i]) == aisle && runs_beside(map, int(i), bay)) return true;
+    return false;
+  };
+  std::vector<int> bays;
+  for (size_t i = 0; i < lanes.size(); ++i)
+    if (lanes[i].type == "parking" && driving_beside(int(i), true) && !driving_beside(int(i), false))
       bays.push_back(int(i));
-  }
-  out = bays;
-  for (size_t i = 0; i < map.lanes().size(); ++i) {
-    const auto& l = map.lanes()[i];
-    if (l.type != "driving" || l.direction != scene::TrafficDirection::Both) continue;
-    const bool lined = std::any_of(bays.begin(), bays.end(), [&](int b) {
-      const auto pos = map.project(int(i), map.point_at(b, map.lanes()[size_t(b)].length() / 2));
-      return pos.s > 0 && pos.s < l.length() && std::abs(pos.lateral) < map.lanes()[size_t(b)].width / 2 + 4.5;
-    });
-    if (lined) out.push_back(int(i));
-  }
+  std::vector<int> out = bays;
+  for (size_t i = 0; i < lanes.size(); ++i)
+    if (lanes[i].type == "driving" && two_way(lanes[i]) &&
+        std::any_of(bays.begin(), bays.end(), [&](int b) { return runs_beside(map, int(i), b); }))
+      out.push_back(int(i));
   return out;
 }
 

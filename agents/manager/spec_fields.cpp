@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <sstream>
 
 #include "agents/language/text.hpp"
 
@@ -56,13 +57,23 @@ std::vector<std::string> segments(const std::string& s) {
 }
 
 // "ego lane" is my lane, "same as ego" the same way as me: the words the rest of the manager reads.
-std::string in_plain_words(std::string v) {
-  static const std::vector<std::pair<std::string, std::string>> kEgo{
-      {"ego lane", "my lane"}, {"ego's lane", "my lane"}, {"ego vehicle", "me"}, {"the ego", "me"}, {"ego", "me"}};
-  for (const auto& [from, to] : kEgo)
-    for (size_t at = v.find(from); at != std::string::npos; at = v.find(from, at + to.size()))
-      v.replace(at, from.size(), to);
-  return v;
+// Word by word, so that no word merely containing "ego" changes.
+std::string in_plain_words(const std::string& v) {
+  std::istringstream in(v);
+  std::vector<std::string> w;
+  for (std::string word; in >> word;) w.push_back(word);
+  std::string out;
+  for (size_t i = 0; i < w.size(); ++i) {
+    std::string word = w[i];
+    if (word == "ego" || word == "ego's") {
+      if (i + 1 < w.size() && w[i + 1] == "vehicle") ++i;  // "the ego vehicle": me
+      word = i + 1 < w.size() && w[i + 1] == "lane" ? "my" : "me";
+      if (out == "the") out.clear();  // "the ego": me
+      else if (out.ends_with(" the")) out.resize(out.size() - 4);
+    }
+    out += (out.empty() ? "" : " ") + word;
+  }
+  return out;
 }
 
 std::string heading_phrase(const std::string& v) {

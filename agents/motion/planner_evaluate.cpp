@@ -43,12 +43,13 @@ std::optional<std::string> Planner::manoeuvre(const Candidate& c, double& speed,
   }
   if (m.action == "straight" && speed > 0 && map.lanes()[size_t(c.lane)].for_stopping()) {
     // Moving off a parking lane: it pulls out into the driving lane beside it.
-    if (const auto side = pull_out_side(c)) m.action = *side > 0 ? "lane_change_left" : "lane_change_right";
+    if (const auto side = side_of_nearest_lane(c, true, 6.0))
+      m.action = *side > 0 ? "lane_change_left" : "lane_change_right";
   }
   if (m.action == "lane_change_kerb" || m.action == "lane_change_median") {
     // The fast lane is on the side of the nearest lane running the other way (the left where
     // traffic keeps right, as assumed with none in reach); the kerb is on the other side.
-    const int median = median_side(c);
+    const int median = side_of_nearest_lane(c, false, 25.0).value_or(1);
     m.action = (m.action == "lane_change_median") == (median > 0) ? "lane_change_left" : "lane_change_right";
   }
   if (m.action == "lane_change_ego") {
@@ -224,41 +225,22 @@ Evaluated Planner::evaluate_at(const Candidate& c, double speed, double wait_s, 
   return e;
 }
 
-// The side (+1 left, -1 right) of the nearest driving lane within 25 m running against a
-// candidate's way; +1 with none (traffic keeping right).
-int Planner::median_side(const Candidate& c) const {
+// The side (+1 left, -1 right) of the nearest driving lane within `reach` of a candidate's start
+// that runs its way (same_way) or against it; none in reach: nullopt.
+std::optional<int> Planner::side_of_nearest_lane(const Candidate& c, bool same_way, double reach) const {
   const auto& map = scene_.lanes;
   const Eigen::Vector2d p = map.point_at(c.lane, c.s);
   const double yaw = map.tangent_yaw_at(c.lane, c.s) + (c.dir > 0 ? 0 : kPi);
   const Eigen::Vector2d left(-std::sin(yaw), std::cos(yaw));
-  double best = 25.0;
-  int side = 1;
+  std::optional<int> side;
+  double best = reach;
   for (size_t i = 0; i < map.lanes().size(); ++i) {
     if (map.lanes()[i].type != "driving" || int(i) == c.lane) continue;
     const auto pos = map.project(int(i), p);
-    if (std::abs(pos.lateral) >= best || pos.s <= 0 || pos.s >= map.lanes()[i].length() ||
-        std::cos(wrap(map.travel_yaw_at(int(i), pos.s) - yaw)) > -0.7)
-      continue;
+    const double along = std::cos(wrap(map.travel_yaw_at(int(i), pos.s) - yaw));
+    if (std::abs(pos.lateral) >= best || (same_way ? along < 0.7 : along > -0.7)) continue;
     best = std::abs(pos.lateral);
     side = left.dot(map.point_at(int(i), pos.s) - p) > 0 ? 1 : -1;
-  }
-  return side;
-}
-
-// The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that
-// runs the way the candidate faces.
-std::optional<int> Planner::pull_out_side(const Candidate& c) const {
-  const auto& map = scene_.lanes;
-  const Eigen::Vector2d p = map.point_at(c.lane, c.s);
-  const double yaw = map.tangent_yaw_at(c.lane, c.s) + (c.dir > 0 ? 0 : kPi);
-  std::optional<int> side;
-  double best = 6.0;
-  for (size_t i = 0; i < map.lanes().size(); ++i) {
-    if (map.lanes()[i].type != "driving") continue;
-    const auto pos = map.project(int(i), p);
-    if (std::abs(pos.lateral) >= best || std::cos(wrap(map.travel_yaw_at(int(i), pos.s) - yaw)) < 0.7) continue;
-    best = std::abs(pos.lateral);
-    side = pos.lateral < 0 ? 1 : -1;  // p right of that lane: the lane is to its left
   }
   return side;
 }

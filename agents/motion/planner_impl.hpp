@@ -128,12 +128,11 @@ class Planner {
   Evaluated evaluate_at(const Candidate& c, double speed, double wait_s = 0, int join_side = 0) const;
   std::optional<double> pace_of_traffic_behind(const Evaluated& e) const;
   std::optional<std::string> manoeuvre(const Candidate& c, double& speed, Manoeuvre& m) const;
-  int median_side(const Candidate& c) const;  // +1: the other way's traffic is on the left
   std::optional<std::pair<Candidate, Evaluated>> wait_for_gap(const std::vector<Candidate>& starts) const;
 
-  // The side (+1 left, -1 right) of the nearest driving lane beside a parking-lane start that
-  // runs the way the candidate faces.
-  std::optional<int> pull_out_side(const Candidate& c) const;
+  // The side (+1 left, -1 right) of the nearest driving lane within reach running the candidate's
+  // way (a parking start pulls out into it) or against it (the fast lane lies on that side).
+  std::optional<int> side_of_nearest_lane(const Candidate& c, bool same_way, double reach) const;
 
   // Held up behind slower traffic when the user asked for a speed: pass it in the lane beside,
   // the user's way of driving (left first), when that lane lets it keep the speed.

@@ -215,11 +215,13 @@ ViewChange parse_view(const std::string& instruction) {
         for (const char* link : {" ", " to the ", " the "})
           if (text::has_any(w, {std::string(verb) + link + side})) v.yaw_deg = yaw;
     // "turn the view to face the shops on the right": what it faces lies on that side.
-    for (const char* verb : {"face", "facing", "look at", "looking at", "point at", "pointing at"})
-      if (const size_t at = text::find_phrase(w, verb); !v.yaw_deg && at != std::string::npos)
-        for (const auto& [side, yaw] : {std::pair{"left", 90.0}, std::pair{"right", -90.0}})
-          for (const char* where : {"on the ", "on my ", "on our ", "to the ", "to my ", "to our "})
-            if (text::find_phrase(w, std::string(where) + side, at) != std::string::npos) v.yaw_deg = yaw;
+    const size_t faces = text::find_any(w, {"face", "facing", "look at", "looking at", "point at", "pointing at"});
+    const Words after(w.begin() + long(std::min(faces, w.size())), w.end());
+    if (!v.yaw_deg && text::has_any(after, {"on the left", "on my left", "on our left", "to the left", "to my left"}))
+      v.yaw_deg = 90;
+    else if (!v.yaw_deg &&
+             text::has_any(after, {"on the right", "on my right", "on our right", "to the right", "to my right"}))
+      v.yaw_deg = -90;
   }
   // "turn the view around", "look behind": half a turn when no angle is given.
   if (!v.yaw_deg && text::has_any(w, {"turn around", "turn the view around", "turn the camera around", "look behind",

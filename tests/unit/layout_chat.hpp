@@ -2,9 +2,11 @@
 // Test helpers on lane layouts: a straight lane, and one conversation manager on one of the blind
 // layouts (tests/data/layouts) with the offline backend: chat(id, command) gives the edit state
 // after that round.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +23,13 @@ inline scene::Lane straight_lane(const std::string& id, double x0, double y0, do
   l.id = id;
   l.centerline = {{x0, y0, 0}, {(x0 + x1) / 2, (y0 + y1) / 2, 0}, {x1, y1, 0}};
   return l;
+}
+
+// The ids an edit state removed, sorted.
+inline std::vector<std::string> removed_ids(const nlohmann::json& state) {
+  auto ids = state["removed"].get<std::vector<std::string>>();
+  std::sort(ids.begin(), ids.end());
+  return ids;
 }
 
 class LayoutChat {

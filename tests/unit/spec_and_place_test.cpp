@@ -12,15 +12,11 @@
 
 using namespace chatsim;
 using chatsim::testing::LayoutChat;
+using chatsim::testing::removed_ids;
 using nlohmann::json;
 
 namespace {
 
-std::vector<std::string> removed(const json& state) {
-  auto ids = state["removed"].get<std::vector<std::string>>();
-  std::sort(ids.begin(), ids.end());
-  return ids;
-}
 const json& start(const json& added) { return added["trajectory"][0]; }
 
 }  // namespace
@@ -47,23 +43,23 @@ TEST(SpecAndPlace, ATestSpecIsOneInstructionOfItsFields) {
 
 TEST(SpecAndPlace, DistanceBoundsSelectByHowFarFromTheEgo) {
   LayoutChat road("blind-giveway");  // parked: obj_12 10.8 m, obj_1 15.3 m, obj_2 24.2 m, the bus 69 m
-  EXPECT_EQ(removed(road("a", "remove all parked vehicles within 20 metres of me")),
+  EXPECT_EQ(removed_ids(road("a", "remove all parked vehicles within 20 metres of me")),
             (std::vector<std::string>{"obj_1", "obj_12"}));
-  EXPECT_EQ(removed(road("b", "remove every parked vehicle more than 20 m away")),
+  EXPECT_EQ(removed_ids(road("b", "remove every parked vehicle more than 20 m away")),
             (std::vector<std::string>{"obj_2", "obj_6"}));
-  EXPECT_EQ(removed(road("c", "delete the parked cars closer than 60 feet")),
+  EXPECT_EQ(removed_ids(road("c", "delete the parked cars closer than 60 feet")),
             (std::vector<std::string>{"obj_1", "obj_12"}));
 }
 
 TEST(SpecAndPlace, APickupIsALongLowCarOrAShortTruck) {
   LayoutChat arterial("blind-twltl");  // obj_1: a 5.4 m pickup labelled a car; obj_13: a 7.5 m lorry
-  EXPECT_EQ(removed(arterial("a", "remove the pickup")), (std::vector<std::string>{"obj_1"}));
-  EXPECT_EQ(removed(arterial("b", "remove the truck in the parking lot")), (std::vector<std::string>{"obj_13"}));
+  EXPECT_EQ(removed_ids(arterial("a", "remove the pickup")), (std::vector<std::string>{"obj_1"}));
+  EXPECT_EQ(removed_ids(arterial("b", "remove the truck in the parking lot")), (std::vector<std::string>{"obj_13"}));
 }
 
 TEST(SpecAndPlace, ACarParkIsFoundByItsShapeWhenNoLaneNamesIt) {
   LayoutChat arterial("blind-twltl");  // the strip mall's bays along a two-way aisle; the road has none
-  EXPECT_EQ(removed(arterial("a", "remove all the cars in the parking lot")),
+  EXPECT_EQ(removed_ids(arterial("a", "remove all the cars in the parking lot")),
             (std::vector<std::string>{"obj_10", "obj_12", "obj_13", "obj_6"}));
   const auto added = arterial("b", "add three cars to the parking lot")["added"];
   ASSERT_EQ(added.size(), 3u);
@@ -72,10 +68,10 @@ TEST(SpecAndPlace, ACarParkIsFoundByItsShapeWhenNoLaneNamesIt) {
 
 TEST(SpecAndPlace, TheMainRoadIsTheBiggerRoadTheEgosJoins) {
   LayoutChat road("blind-giveway");  // the ego's two-lane minor road meets a four-lane main road
-  const auto gone = removed(road("a", "remove all vehicles on the main road"));
+  const auto gone = removed_ids(road("a", "remove all vehicles on the main road"));
   EXPECT_EQ(gone, (std::vector<std::string>{"obj_11", "obj_4", "obj_5", "obj_7", "obj_8"}));
   // Across the junction: past it, where the bus stands at its stop.
-  EXPECT_EQ(removed(road("b", "get rid of the bus at the stop across the junction")),
+  EXPECT_EQ(removed_ids(road("b", "get rid of the bus at the stop across the junction")),
             (std::vector<std::string>{"obj_6"}));
 }
 
@@ -126,6 +122,6 @@ TEST(SpecAndPlace, PullingOutOfASideLaneWaitsForAGapAndLeavesFromItsMouth) {
   EXPECT_LT(start(out[0])["y"].get<double>(), -2) << out[0]["intent"];
   EXPECT_EQ(out[0]["intent"]["lane"].get<std::string>().rfind("north", 0), 0u) << out[0]["intent"];
   // The one standing at a driveway's mouth, waiting to leave, is the one meant.
-  EXPECT_EQ(removed(arterial("b", "delete the car waiting to leave the gas station")),
+  EXPECT_EQ(removed_ids(arterial("b", "delete the car waiting to leave the gas station")),
             (std::vector<std::string>{"obj_8"}));
 }
