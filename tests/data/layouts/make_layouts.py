@@ -18,6 +18,7 @@ import layouts_v21
 import layouts_v23
 import layouts_v24
 import layouts_v25
+import layouts_v26
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -410,3 +411,4 @@ if __name__ == "__main__":
     layouts_v23.main()
     layouts_v24.main()
     layouts_v25.main()
+    layouts_v26.main()
