@@ -31,15 +31,14 @@ bool governed_by_preposition(const std::vector<std::string>& w, size_t begin) {
 
 AssetRequest parse_asset(const std::string& instruction) {
   auto w = text::words(instruction);
-  // What follows a relation names another vehicle ("a police car chasing the porsche").
-  const size_t rel = text::find_any(w, {"chasing", "chases", "chase the", "following", "follows", "follow the",
-                                        "pursuing", "tailing", "overtake the", "overtakes the", "overtaking the",
-                                        "pass the", "passing the",
-                                        "toward the", "near the", "where the", "instead of the", "in place of the",
-                                        "between the", "between two", "among the",
-                                        "behind the", "behind it", "in front of the", "in front of it", "ahead of the",
-                                        "to the front of", "next to the", "beside the", "after the", "left of the",
-                                        "right of the", "like the", "same as the"});
+  // What follows a relation names another vehicle ("a police car chasing the porsche", "an SUV
+  // tailgating the orange car").
+  size_t rel = text::find_any(w, {"toward the", "near the", "where the", "instead of the", "in place of the",
+                                  "between the", "between two", "among the", "overtake the", "overtakes the",
+                                  "overtaking the", "pass the", "passing the", "like the", "same as the"});
+  for (const auto& r : lexicon::relation_phrases())
+    for (const char* det : {"the", "it", "that", "this"})
+      rel = std::min(rel, text::find_phrase(w, r.phrase + " " + det));
   if (rel != std::string::npos && rel > 0) w.resize(rel);
   AssetRequest r;
   auto types = lexicon::find_types(w);

@@ -304,6 +304,9 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
     s.moving = true;
   // "the row of bays on the left", "the cars in the spaces": what stands in a bay is parked.
   s.parked = text::has_any(p, {"parked", "parking", "bay", "bays", "spaces", "spots", "parking space"});
+  // "the cars waiting at the lights", "the last car in the queue": standing in a lane of traffic.
+  s.waiting = !s.parked && text::has_any(p, {"waiting", "queuing", "queueing", "queued", "queue", "at the lights",
+                                             "at the light", "at the red light", "in traffic", "held up"});
   // "the van that's double parked", "the car blocking my lane": standing in a lane of traffic.
   if (text::has_any(p, {"double parked", "blocking", "stopped in the road", "stopped in the street",
                         "in the middle of the road", "in the middle of the street", "stranded in"})) {
@@ -359,6 +362,16 @@ Words two_wheelers_named(Words w) {
   return w;
 }
 
+// "the car by the school", "everything near the lights": a vehicle (or "everything") named before
+// the thing, which only says where.
+bool named_before(const Words& w, const std::string& thing) {
+  const size_t at = text::find_phrase(w, thing);
+  const auto types = lexicon::find_types(Words(w.begin(), w.begin() + long(std::min(at, w.size()))));
+  return std::any_of(types.begin(), types.end(), [](const lexicon::TypeMention& t) { return t.type.type != "object"; }) ||
+         text::has_any(Words(w.begin(), w.begin() + long(std::min(at, w.size()))),
+                       {"everything", "anything", "whatever", "all", "one", "ones", "them", "it"});
+}
+
 }  // namespace
 
 DeletionRequest parse_deletion(const std::string& instruction) {
@@ -366,7 +379,8 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   DeletionRequest r;
   // A tram or a horse cannot be added, but a scene may label one (KITTI, nuScenes): what can be
   // selected is the scene's to say.
-  if (auto u = lexicon::unsupported_noun(w); u && lexicon::find_types({*u}).empty()) r.unsupported = *u;
+  if (auto u = lexicon::unsupported_noun(w); u && lexicon::find_types(text::words(*u)).empty() && !named_before(w, *u))
+    r.unsupported = *u;
   size_t except_len = 0;
   const size_t except_at = text::find_any(w, {"except", "but not", "other than", "apart from", "besides", "but the",
                                               "excluding", "save for", "but leave", "but keep"}, &except_len);

@@ -24,6 +24,7 @@ struct Selector {
   bool anchor_only = false;             // "closest to the police car": it places the next selector, stays
   std::optional<bool> moving;
   bool parked = false;                  // "parked": standing at the kerb, not waiting in a lane
+  bool waiting = false;                 // "waiting at the lights", "in the queue": in a lane of traffic, not parked
   std::optional<bool> approaching;      // moving toward the ego ("the car coming toward us")
   bool reversing = false;               // moves backwards at some time ("the car backing out of its bay")
   std::optional<double> within_m;       // "within 16 m of me": at most this far from the ego at frame 0

@@ -23,6 +23,7 @@ nlohmann::json selector_json(const Selector& s) {
   util::put_optional(j, "within_m", s.within_m);
   util::put_optional(j, "beyond_m", s.beyond_m);
   if (s.parked) j["parked"] = true;
+  if (s.waiting) j["waiting"] = true;
   if (s.order) {
     j["order"] = *s.order;
     j["nth"] = s.nth;
@@ -47,6 +48,7 @@ Selector selector_from(const nlohmann::json& j) {
   util::get_optional(j, "approaching", s.approaching);
   util::get_optional(j, "moving", s.moving);
   s.parked = j.value("parked", false);
+  s.waiting = j.value("waiting", false);
   s.reversing = j.value("reversing", false);
   util::get_optional(j, "within_m", s.within_m);
   util::get_optional(j, "beyond_m", s.beyond_m);

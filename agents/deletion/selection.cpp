@@ -91,6 +91,13 @@ void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::ve
         kerbside.push_back(c);
     if (!kerbside.empty()) m = kerbside;
   }
+  // "waiting at the lights": in a lane of traffic, not parked at the kerb (if any is left).
+  if (t.waiting) {
+    std::vector<const Candidate*> in_lane;
+    for (const auto* c : m)
+      if (c->lane.own >= 0 && !c->lane.parking && !c->lane.shoulder) in_lane.push_back(c);
+    if (!in_lane.empty()) m = in_lane;
+  }
   // "the bike" with no bicycle about: a motorbike is a bike too. "The lorry" with no truck
   // labelled: an articulated one is labelled by its trailer (nuScenes), a tipper as construction.
   const auto widen_to = [&](std::initializer_list<const char*> categories) {
@@ -173,7 +180,7 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
 // way ("the cars waiting to turn left" on a road without turn lanes), so nothing is narrowed.
 void keep_on_lanes_of_use(const Selector& t, const scene::Scene& scene, std::vector<const Candidate*>& m) {
   if (!t.lane_use) return;
-  const auto lanes = language::lanes_for_use(scene.lanes, *t.lane_use);
+  const auto lanes = language::lanes_for_use(scene, *t.lane_use);
   if (lanes.empty()) return;
   // A car park is an area: a car on its way out, just off the aisle, is still in it.
   const bool area = *t.lane_use == "car_park";

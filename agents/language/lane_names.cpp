@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <iterator>
+#include <numbers>
 
 #include "agents/language/text.hpp"
 
@@ -58,6 +59,18 @@ bool says_where(const std::string& w) {
 }  // namespace
 
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
+  // "the street we're turning into", "the road it turns onto": where the ego's path goes after
+  // its turn in the recording.
+  for (size_t i = 0; i < w.size(); ++i) {
+    if (w[i] != "street" && w[i] != "road") continue;
+    for (size_t j = i + 1; j + 1 < std::min(w.size(), i + 7); ++j)
+      if ((w[j] == "turn" || w[j] == "turns" || w[j] == "turning") && (w[j + 1] == "into" || w[j + 1] == "onto")) {
+        size_t begin = i;
+        if (begin > 0 && (w[begin - 1] == "cross" || w[begin - 1] == "side")) --begin;
+        if (begin > 0 && w[begin - 1] == "the") --begin;
+        return LaneName{"ego_turn", begin, j + 2};
+      }
+  }
   // "on the roundabout", "going round the roundabout": its ring, not "at the roundabout" (a junction).
   for (size_t i = 2; i < w.size(); ++i)
     if ((w[i] == "roundabout" || w[i] == "rotary") && w[i - 1] == "the" &&
@@ -175,6 +188,40 @@ std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use
     if (opens != 0 && (side == 0 || opens == side)) out.push_back(int(i));
   }
   return out;
+}
+
+namespace {
+
+double yaw_of(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
+
+// Whether lane i runs beside p (within 12 m, inside its extent) along or against yaw: a lane of
+// the road p is on.
+bool of_the_road_at(const scene::LaneMap& map, int i, const Eigen::Vector2d& p, double yaw) {
+  const auto pos = map.project(i, p);
+  const double length = map.lanes()[size_t(i)].length();
+  return pos.s > 0.5 && pos.s < length - 0.5 && (map.point_at(i, pos.s) - p).norm() < 12.0 &&
+         std::abs(std::cos(pos.tangent_yaw - yaw)) > 0.9;
+}
+
+}  // namespace
+
+std::vector<int> lanes_the_ego_turns_into(const scene::Scene& scene) {
+  if (scene.frames.size() < 2 || scene.lanes.empty()) return {};
+  const auto& last = scene.frames.back().ego_to_world;
+  const double yaw = yaw_of(last);
+  const double turn = std::remainder(yaw - yaw_of(scene.frames.front().ego_to_world), 2 * std::numbers::pi);
+  if (std::abs(turn) < std::numbers::pi / 4) return {};  // it does not turn within the clip
+  const Eigen::Vector2d end = last.translation().head<2>();
+  const Eigen::Vector2d further = end + 20.0 * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+  std::vector<int> out;
+  for (size_t i = 0; i < scene.lanes.lanes().size(); ++i)
+    if (of_the_road_at(scene.lanes, int(i), end, yaw) || of_the_road_at(scene.lanes, int(i), further, yaw))
+      out.push_back(int(i));
+  return out;
+}
+
+std::vector<int> lanes_for_use(const scene::Scene& scene, const std::string& use) {
+  return use == "ego_turn" ? lanes_the_ego_turns_into(scene) : lanes_for_use(scene.lanes, use);
 }
 
 }  // namespace chatsim::agents::language

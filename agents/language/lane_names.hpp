@@ -6,11 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "common/scene/lane_map.hpp"
+#include "common/scene/scene.hpp"
 
 namespace chatsim::agents::language {
 
-// A lane's use as the agents pass it on: bus, turn, turn_left, turn_right, cycle, tram, taxi, hov,
+// A lane's use as the agents pass it on: ego_turn ("the street we turn into": the road the ego's
+// path takes after its turn), bus, turn, turn_left, turn_right, cycle, tram, taxi, hov,
 // roundabout ("on the roundabout": its ring), car_park ("in the car park": the lanes of that area),
 // or a word of the map's own ("service" for "the service road", "farm" for "the farm track").
 struct LaneName {
@@ -29,5 +30,9 @@ std::optional<std::string> blank_junction_place(std::vector<std::string>& w);
 // The map's lanes of that use: those whose id has the use's word; for turn lanes, with no such
 // id, the lanes that open off another (on the side said). None: the map does not name it.
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use);
+// As above, and ego_turn: the lanes of the road the ego drives on at the clip's end, when its
+// recorded path has turned by more than 45 degrees by then (none when it has not).
+std::vector<int> lanes_for_use(const scene::Scene& scene, const std::string& use);
+std::vector<int> lanes_the_ego_turns_into(const scene::Scene& scene);
 
 }  // namespace chatsim::agents::language

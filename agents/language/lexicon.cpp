@@ -333,11 +333,17 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
       // "the bus bay", "a bus stop", "the car park", "a taxi rank": a place named after a vehicle.
       static const char* kPlaces[] = {"bay", "bays", "stop", "stops", "lane", "lanes", "station", "shelter", "park",
                                       "rank", "depot", "garage", "wash", "dealership"};
+      // "the traffic lights", "a traffic island": a thing named after traffic.
+      static const char* kTrafficThings[] = {"light", "lights", "signal", "signals", "sign", "signs", "island",
+                                             "islands", "calming", "warden", "wardens"};
       const size_t after = at + nw.size();
       // "a motorbike lane splitting": riding between lanes, not a lane.
       const bool activity = after + 1 < w.size() && (w[after + 1] == "splitting" || w[after + 1] == "filtering");
       if (after < w.size() && !activity &&
           std::any_of(std::begin(kPlaces), std::end(kPlaces), [&](const char* p) { return w[after] == p; }))
+        continue;
+      if (after < w.size() && nw.size() == 1 && nw[0] == "traffic" &&
+          std::any_of(std::begin(kTrafficThings), std::end(kTrafficThings), [&](const char* p) { return w[after] == p; }))
         continue;
       for (size_t k = 0; k < nw.size(); ++k) used[at + k] = true;
       out.push_back({types().at(n.type), at, at + nw.size(), n.plural});
@@ -354,24 +360,55 @@ const std::vector<std::string>& place_of_removed_phrases() {
   return kPhrases;
 }
 
+const std::vector<Relation>& relation_phrases() {
+  static const std::vector<Relation> kRelations{
+      {"in front of", "front"}, {"to the front of", "front"}, {"at the front of", "front"}, {"ahead of", "front"},
+      {"just ahead of", "front"}, {"past", "beyond"}, {"beyond", "beyond"},
+      {"further on than", "beyond"},
+      {"chasing behind", "back", true}, {"following behind", "back", true}, {"behind", "back"},
+      {"chasing after", "back", true}, {"chasing", "back", true}, {"following", "back", true},
+      {"chases", "back", true}, {"follows", "back", true}, {"tailing", "back", true}, {"tailgating", "back", true},
+      {"tailgates", "back", true}, {"trailing", "back", true}, {"on the tail of", "back", true}, {"after", "back"},
+      {"chase", "back", true}, {"follow", "back", true}, {"to the left of", "left"}, {"left of", "left"},
+      {"to the right of", "right"}, {"right of", "right"}, {"next to", "left"}, {"beside", "left"},
+      {"alongside", "left"}, {"level with", "left"}, {"abreast of", "left"},
+      {"on the other side of the road from", "opposite"}, {"across the road from", "opposite"},
+      {"across the street from", "opposite"}, {"across from", "opposite"}, {"opposite", "opposite"}};
+  return kRelations;
+}
+
 std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {
-  static const char* kNouns[] = {"helicopter", "helicopters", "plane", "planes", "airplane", "aeroplane", "boat",
-                                 "boats", "ship", "train", "trains", "tram", "trams", "streetcar", "streetcars",
-                                 "trolley", "trolleys", "tank", "tanks", "horse", "horses", "sheep", "deer", "animal",
-                                 "animals",
-                                 "dog", "dogs", "cat", "cats", "cow", "cows", "dinosaur", "spaceship", "ufo",
-                                 "rocket", "submarine", "saucer", "saucers", "hovercraft", "blimp", "zeppelin",
-                                 "elephant", "giraffe", "unicorn", "dragon", "tree", "trees",
-                                 "house", "houses", "building", "buildings"};
-  // "a horse box trailer", "a boat trailer": a noun right before a vehicle noun says what kind of
-  // vehicle, not what is added.
+  static const char* kNouns[] = {
+      "helicopter", "helicopters", "plane", "planes", "airplane", "aeroplane", "boat", "boats", "ship", "train",
+      "trains", "tram", "trams", "streetcar", "streetcars", "trolley", "trolleys", "tank", "tanks", "horse", "horses",
+      "sheep", "deer", "animal", "animals", "dog", "dogs", "cat", "cats", "cow", "cows", "dinosaur", "spaceship", "ufo",
+      "rocket", "submarine", "saucer", "saucers", "hovercraft", "blimp", "zeppelin", "elephant", "giraffe", "unicorn",
+      "dragon", "tree", "trees", "house", "houses", "building", "buildings",
+      // Street furniture and the scene itself: drawn by the background, not labelled objects.
+      "traffic light", "traffic lights", "traffic signal", "traffic signals", "street light", "street lights",
+      "streetlight", "streetlights", "lamp post", "lamp posts", "lamppost", "lampposts", "road sign", "road signs",
+      "traffic sign", "traffic signs", "signpost", "signposts", "sign", "signs", "road markings", "markings", "sky",
+      "clouds", "bench", "benches", "fence", "fences", "hedge", "hedges", "bus shelter", "shop", "shops", "school"};
+  // "a horse box trailer", "a boat trailer", "the school bus": a noun right before a vehicle noun
+  // says what kind of vehicle, not what is added.
+  static const auto kNounWords = [] {
+    std::vector<std::vector<std::string>> out;
+    for (const char* n : kNouns) out.push_back(text::words(n));
+    return out;
+  }();
   const auto vehicles = find_types(w);
   for (size_t i = 0; i < w.size(); ++i)
-    for (const char* n : kNouns)
-      if (w[i] == n && std::none_of(vehicles.begin(), vehicles.end(), [&](const TypeMention& t) {
-            return t.begin > i && t.begin <= i + 2 && t.type.type != "object" && !t.type.living();
+    for (size_t k = 0; k < kNounWords.size(); ++k) {
+      const auto& nw = kNounWords[k];
+      const char* n = kNouns[k];
+      if (!words_at(w, i, nw)) continue;
+      const size_t end = i + nw.size();
+      if (std::none_of(vehicles.begin(), vehicles.end(), [&](const TypeMention& t) {
+            const bool inside = t.begin <= i && i < t.end;  // "a school bus" is a vehicle
+            return (inside || (t.begin >= end && t.begin <= end + 1)) && t.type.type != "object" && !t.type.living();
           }))
-        return w[i];
+        return std::string(n);
+    }
   return std::nullopt;
 }
 

@@ -52,6 +52,18 @@ std::string make_display_name(const std::string& brand);
 
 // "in its place", "where it was", "in its spot": where a vehicle removed (or being removed) stood.
 const std::vector<std::string>& place_of_removed_phrases();
+
+// Words that place a vehicle relative to another ("behind the bus", "tailgating the orange car",
+// "opposite the school bus"): the region (front, back, left, right; beyond: past it as seen from
+// the ego; opposite: level with it across the road) and whether it follows that vehicle. What
+// follows one names the other vehicle, not the one added. Tried in this order: a phrase before
+// any phrase it contains ("chasing after" before "after").
+struct Relation {
+  std::string phrase;
+  std::string region;
+  bool chase = false;
+};
+const std::vector<Relation>& relation_phrases();
 // Words that name something we cannot select or add (helicopter, plane, ...).
 std::optional<std::string> unsupported_noun(const std::vector<std::string>& words);
 

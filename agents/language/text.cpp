@@ -16,7 +16,9 @@ const std::map<std::string, std::string>& spellings() {
       {"towards", "toward"}, {"kph", "km/h"}, {"kmh", "km/h"}, {"kmph", "km/h"}, {"mins", "minutes"},
       {"centre", "center"}, {"recolour", "recolor"}, {"kerb", "curb"}, {"kerbs", "curbs"}, {"lorry", "truck"},
       {"lorries", "trucks"}, {"tyre", "tire"}, {"u", "you"}, {"pls", "please"}, {"plz", "please"},
-      {"fwd", "forward"}, {"thx", "thanks"}, {"bkwd", "backward"}};
+      {"fwd", "forward"}, {"thx", "thanks"}, {"bkwd", "backward"}, {"lhs", "left side"}, {"rhs", "right side"},
+      {"w/", "with"}, {"w/o", "without"}, {"veh", "vehicle"}, {"vehs", "vehicles"}, {"approx", "about"},
+      {"yd", "yards"}, {"yds", "yards"}, {"ped", "pedestrian"}, {"peds", "pedestrians"}};
   return m;
 }
 
@@ -87,7 +89,15 @@ std::vector<std::string> words(std::string_view s_in) {
       cur.erase(cur.begin());
     if (!cur.empty()) {
       const auto it = spellings().find(cur);
-      out.push_back(it == spellings().end() ? cur : it->second);
+      if (it == spellings().end()) {
+        out.push_back(cur);
+      } else {  // "lhs" -> "left side": an abbreviation may stand for several words
+        for (size_t from = 0; from <= it->second.size();) {
+          const size_t space = std::min(it->second.find(' ', from), it->second.size());
+          out.push_back(it->second.substr(from, space - from));
+          from = space + 1;
+        }
+      }
     }
     cur.clear();
   };
@@ -99,6 +109,9 @@ std::vector<std::string> words(std::string_view s_in) {
       // "5m" and "30km/h" split into number and unit.
       if (!cur.empty() && std::isalpha(c) && std::isdigit(static_cast<unsigned char>(cur.back()))) flush();
       cur.push_back(char(std::tolower(c)));
+    } else if (c == '&') {  // "delete the truck & move the camera"
+      flush();
+      out.push_back("and");
     } else if (c == '\'' && !cur.empty()) {
       // "don't" -> "dont"; "car's" -> "car"
       if (i + 1 < s.size() && (s[i + 1] == 's' || s[i + 1] == 'S') &&
@@ -244,6 +257,16 @@ void turns_to_degrees(std::vector<std::string>& w) {
       w.erase(w.begin() + long(at), w.begin() + long(at + n));
       w.insert(w.begin() + long(at), {degrees, "degrees"});
     }
+  // "turn it a quarter to the left", "a quarter right": a quarter turn that way.
+  for (size_t i = 0; i + 1 < w.size(); ++i) {
+    if (w[i] != "quarter" || !(w[i + 1] == "left" || w[i + 1] == "right" || w[i + 1] == "to" ||
+                               w[i + 1] == "clockwise" || w[i + 1] == "anticlockwise" || w[i + 1] == "counterclockwise"))
+      continue;
+    const size_t from = i > 0 && (w[i - 1] == "a" || w[i - 1] == "one") ? i - 1 : i;
+    w.erase(w.begin() + long(from), w.begin() + long(i + 1));
+    w.insert(w.begin() + long(from), {"90", "degrees"});
+    i = from + 1;
+  }
 }
 
 void bare_turns_to_degrees(std::vector<std::string>& w) {

@@ -9,7 +9,8 @@
 namespace chatsim::agents::text {
 
 // Lower case; letters, digits, '.', '-' kept inside words; everything else separates words.
-// British and American spellings are folded ("metres" -> "meters").
+// British and American spellings are folded ("metres" -> "meters"), abbreviations written out
+// ("lhs" -> "left side", "w/" -> "with"), and '&' read as "and".
 std::vector<std::string> words(std::string_view s);
 std::string join(const std::vector<std::string>& words, size_t begin = 0, size_t end = std::string::npos);
 

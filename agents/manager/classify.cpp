@@ -67,7 +67,7 @@ bool classify_whole(const Words& c, Instruction& in) {
       // "put the bus back", "bring the red car back"; not "put it 20 m further back" (a move)
       ((first == "put" || first == "bring") && c.size() > 2 && c.back() == "back" &&
        !has_any(c, {"further", "farther", "more"}) &&
-       text::quantities(c, {"meters", "meter", "m", "feet", "ft"}).empty())) {
+       text::quantities(c, {"meters", "meter", "m", "feet", "ft", "yards"}).empty())) {
     in.kind = "restore";
     in.target = in.text;
     return true;
@@ -107,6 +107,13 @@ bool classify_whole(const Words& c, Instruction& in) {
     if (mentions_vehicle(after_of) || has_any(after_of, {"traffic", "everything", "anything"})) {
       in.kind = "delete";
       in.text = mentions_vehicle(after_of) ? "remove all " + text::join(after_of) : "remove all vehicles";
+      // "clear the left side of parked cars", "clear the car park of trucks": where stays said.
+      const Words place(c.begin() + 1, c.begin() + long(of));
+      const bool everywhere = std::all_of(place.begin(), place.end(), [](const std::string& x) {
+        return x == "the" || x == "whole" || x == "entire" || x == "scene" || x == "road" || x == "street" ||
+               x == "picture" || x == "frame" || x == "view" || x == "area";
+      });
+      if (!everywhere) in.text += (has_any(place, {"side"}) ? " on " : " in ") + text::join(place);
       return true;
     }
     if (!mentions_vehicle(c) && has_any(c, {"scene", "whole", "entire", "everything", "picture", "frame", "view"})) {
@@ -449,7 +456,7 @@ Instruction classify(const Words& c_in) {
     in.target = reference_in(in.text);
     return in;
   }
-  const bool has_amount = !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty();
+  const bool has_amount = !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "yards", "cm"}).empty();
   if (view_words ||
       (has_amount && has_any(c, {"move", "shift", "raise", "lower", "rotate", "look", "pan", "tilt", "turn", "go", "slide",
                                  "nudge", "drop", "lift", "step", "swing", "yaw", "bring"}))) {

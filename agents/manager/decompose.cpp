@@ -92,8 +92,12 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
       size_t j = i + 1;
       while (j < w.size() && (w[j] == "then" || w[j] == "also" || w[j] == "please" || w[j] == "finally")) ++j;
       // "... and have the ego drive slowly", "... and let it turn left": a new instruction too.
-      const bool have_object = j + 1 < w.size() && (w[j] == "have" || w[j] == "let") &&
-                               (w[j + 1] == "the" || w[j + 1] == "it" || w[j + 1] == "them" || w[j + 1] == "ego");
+      // "... and have a black cab drive ahead of us": a new vehicle made to do something.
+      const bool have_object =
+          j + 1 < w.size() && (w[j] == "have" || w[j] == "let") &&
+          (w[j + 1] == "the" || w[j + 1] == "it" || w[j + 1] == "them" || w[j + 1] == "ego" ||
+           ((w[j + 1] == "a" || w[j + 1] == "an" || text::is_number_word(w[j + 1])) &&
+            mentions_vehicle(Words(w.begin() + long(j + 1), w.begin() + long(std::min(w.size(), j + 6))))));
       // "... and drive the camera 10 m forward", "and bring the view down": any verb on the camera.
       const bool camera_object = j + 2 < w.size() && (w[j + 1] == "the" || w[j + 1] == "my" || w[j + 1] == "our") &&
                                  (w[j + 2] == "camera" || w[j + 2] == "view" || w[j + 2] == "viewpoint");
@@ -333,6 +337,14 @@ std::string without_self_corrections(std::string command) {
   return command;
 }
 
+// "1) remove the bus 2) add a car", "(a) ... (b) ...", "- remove the bus" on lines of their own:
+// list markers end a sentence; a number only when a bracket follows it or it opens a line.
+std::string without_list_markers(const std::string& command) {
+  static const std::regex kBracketed(R"((^|\s)\(?(\d{1,2}|[a-hA-H])\)\s+)");
+  static const std::regex kLineStart(R"((^|[\n;])\s*(\d{1,2}[.:]|[-*]|•)\s+)");
+  return std::regex_replace(std::regex_replace(command, kBracketed, ". "), kLineStart, "$1. ");
+}
+
 // "Don't touch the trucks, but get rid of every car on the left": what is not to be touched is
 // an exception to what follows "but" ("get rid of every car on the left except the trucks").
 std::string negation_as_exception(const std::string& sentence) {
@@ -344,6 +356,21 @@ std::string negation_as_exception(const std::string& sentence) {
   std::smatch m;
   if (!std::regex_match(sentence, m, kNegated)) return sentence;
   return m[2].str() + " except " + m[1].str();
+}
+
+// "w/ its lights on, put a police car behind the bus": a leading "with ..." phrase says how the
+// next clause's vehicle is; it goes to the end of that clause.
+std::vector<Words> with_phrases_attached(std::vector<Words> parts) {
+  for (size_t k = 0; k + 1 < parts.size(); ++k) {
+    const Words& p = parts[k];
+    if (p.empty() || (p.front() != "with" && p.front() != "without") ||
+        std::any_of(p.begin(), p.end(), [](const std::string& x) { return starts_instruction(x); }))
+      continue;
+    parts[k + 1].insert(parts[k + 1].end(), p.begin(), p.end());
+    parts.erase(parts.begin() + long(k));
+    --k;
+  }
+  return parts;
 }
 
 // "the white van has broken down and a tow truck is parked behind it": a clause saying how a
@@ -380,7 +407,8 @@ void resolve_description(Words& w, std::vector<bool>& comma) {
 
 std::vector<Instruction> decompose(const std::string& command_in) {
   std::vector<Instruction> out;
-  const std::string command = without_self_corrections(spec_as_sentence(command_in).value_or(command_in));
+  const std::string listed = without_list_markers(command_in);
+  const std::string command = without_self_corrections(spec_as_sentence(listed).value_or(listed));
   for (const auto& said : sentences(command)) {
     const std::string sentence = negation_as_exception(said);
     if (const size_t colon = sentence.find(':'); colon != std::string::npos) {
@@ -394,12 +422,12 @@ std::vector<Instruction> decompose(const std::string& command_in) {
     lexicon::correct_typos(w);
     std::string previous;
     resolve_description(w, comma);
-    for (const auto& c : clauses(w, comma)) {
+    for (const auto& c : with_phrases_attached(clauses(w, comma))) {
       Instruction in = classify(c);
       // "raise the camera 2 m and move it 1 m left", "... and drop it 0.3 m": "it" is the camera
       // of the clause before.
       if ((in.kind == "revise" || in.kind == "unclear") && previous == "view" && !mentions_vehicle(c) &&
-          !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "cm"}).empty()) {
+          !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "yards", "cm"}).empty()) {
         in.kind = "view";
         in.target.clear();
       }

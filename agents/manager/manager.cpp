@@ -400,15 +400,22 @@ bool Manager::replan_revised(Conversation& c, int t, const json& said, const std
     keep.erase("distance_factor");
     keep.erase("relative");
   }
+  // Moved along the road: no longer placed by another vehicle, and a side becomes that side ahead.
+  json base = v.intent;
+  if (said.contains("distance_change_m") || said.contains("distance_factor")) {
+    base.erase("relative");
+    const std::string side = base.value("placement", v.resolved.value("placement", ""));
+    if (side == "left" || side == "right") keep["placement"] = side + "_front";
+  }
   // Same place unless told otherwise: a revision of how it moves keeps where it starts.
   const bool place_said = keep.contains("placement") || keep.contains("relative") || keep.contains("distance_m");
   const bool keeps_start = !place_said && !v.intent.contains("relative") && v.resolved.contains("distance_m");
   if (keeps_start) keep["distance_m"] = v.resolved["distance_m"];
-  json args{{"base_intent", v.intent}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},
+  json args{{"base_intent", base}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},
             {"type", v.asset["type"]}, {"removed", c.removed}, {"others", others_json(c, t)}};
   // Placed by another vehicle and not moved now: "have it pull out" starts where it stands, not
   // wherever the relation would put a vehicle that moves.
-  const json placed_by = v.intent.value("relative", json());
+  const json placed_by = base.value("relative", json());
   const bool pinned = !place_said && !follow_only && !placed_by.is_null() && !v.trajectory.empty();
   const json merged_rel = said.contains("relative") ? said["relative"] : (said.contains("placement") ? json() : placed_by);
   const json unpinned = args;

@@ -108,6 +108,7 @@ class Manager {
   // The start of the vehicle a placement is relative to: an added one (not `except`), else a
   // recorded one the deletion agent selects by the same words; nullopt when none matches.
   std::optional<nlohmann::json> find_anchor(Conversation& c, const std::string& reference, int except);
+  std::optional<nlohmann::json> ordinal_of_removed(Conversation& c, const std::string& reference);
   nlohmann::json others_json(const Conversation& c, int except) const;
   nlohmann::json edit_state(const Conversation& c) const;
   AgentOutcome call(const std::string& kind, const Conversation& c, const std::string& action, nlohmann::json args);

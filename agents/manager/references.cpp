@@ -18,7 +18,32 @@ json anchor_json(const AddedVehicle& a) {
           {"speed_mps", a.speed_mps}, {"wrong_way", a.resolved.value("wrong_way", false)}};
 }
 
+// "the first one", "the second one", "the last one": which of a batch, by its order.
+std::optional<size_t> ordinal_one(const std::vector<std::string>& w, size_t n) {
+  if (n == 0 || !text::has_any(w, {"one", "ones"}) || !lexicon::find_types(w).empty() ||
+      !lexicon::find_colors(w).empty() || !lexicon::find_brands(w).empty())
+    return std::nullopt;
+  static const char* ordinals[] = {"first", "second", "third", "fourth", "fifth"};
+  for (size_t k = 0; k < 5; ++k)
+    if (text::has_phrase(w, ordinals[k])) return k < n ? std::optional<size_t>(k) : std::nullopt;
+  if (text::has_phrase(w, "last")) return n - 1;
+  return std::nullopt;
+}
+
 }  // namespace
+
+// "remove the waiting cars, then add a police car where the first one was": with nothing added
+// yet, "the first one" is of the vehicles removed last.
+std::optional<json> Manager::ordinal_of_removed(Conversation& c, const std::string& reference) {
+  if (!c.added.empty() || c.removal_batches.empty()) return std::nullopt;
+  const auto k = ordinal_one(text::words(reference), c.removal_batches.back().size());
+  if (!k) return std::nullopt;
+  const auto out = call("deletion", c, "locate", {{"ids", json::array({c.removal_batches.back()[*k]})}});
+  if (!out.ok || out.result.value("objects", json::array()).empty()) return std::nullopt;
+  const json anchor = out.result["objects"][0];
+  c.recorded_anchors[anchor["id"].get<std::string>()] = anchor;
+  return anchor;
+}
 
 std::optional<json> Manager::find_anchor(Conversation& c, const std::string& reference, int except) {
   if (const auto it = c.recorded_anchors.find(reference); it != c.recorded_anchors.end()) return it->second;
@@ -30,6 +55,7 @@ std::optional<json> Manager::find_anchor(Conversation& c, const std::string& ref
     c.recorded_anchors[anchor["id"].get<std::string>()] = anchor;
     return anchor;
   }
+  if (const auto removed = ordinal_of_removed(c, reference)) return removed;
   auto ref = resolve(c, reference);
   ref.erase(std::remove(ref.begin(), ref.end(), except), ref.end());
   if (!ref.empty()) return anchor_json(c.added[size_t(ref.front())]);

@@ -22,22 +22,7 @@ bool is_self(const std::string& w) { return w == "me" || w == "us" || w == "my" 
 
 // "in front of the added car" -> {"the added car", front}; not "in front of me".
 std::optional<RelativePlacement> find_relative(Words& w) {
-  struct Pattern {
-    const char* phrase;
-    const char* region;
-    bool chase;
-  };
-  static const Pattern patterns[] = {
-      {"in front of", "front", false}, {"to the front of", "front", false}, {"at the front of", "front", false},
-      {"ahead of", "front", false},    {"just ahead of", "front", false},   {"past", "front", false},
-      {"beyond", "front", false},      {"further on than", "front", false}, {"chasing behind", "back", true},
-      {"following behind", "back", true}, {"behind", "back", false},       {"chasing after", "back", true},
-      {"chasing", "back", true},       {"following", "back", true},         {"chases", "back", true},
-      {"follows", "back", true},       {"tailing", "back", true},           {"after", "back", false},
-      {"chase", "back", true},         {"follow", "back", true},
-      {"to the left of", "left", false}, {"left of", "left", false},        {"to the right of", "right", false},
-      {"right of", "right", false},    {"next to", "left", false},          {"beside", "left", false}};
-  for (const auto& p : patterns) {
+  for (const auto& p : lexicon::relation_phrases()) {
     for (size_t at = find_phrase(w, p.phrase); at != std::string::npos; at = find_phrase(w, p.phrase, at + 1)) {
       const size_t after = at + text::words(p.phrase).size();
       if (after >= w.size() || is_self(w[after])) continue;
@@ -76,6 +61,8 @@ std::optional<RelativePlacement> find_relative(Words& w) {
           lexicon::find_brands(rw).empty() && lexicon::find_colors(rw).empty())
         continue;
       RelativePlacement r{ref, p.region};
+      // "parked on the right after the silver SUV": where along the road, past it.
+      if (p.phrase == "after" && has_any(w, {"parked", "park", "stopped", "standing"})) r.region = "beyond";
       for (size_t k = at; k < end; ++k) w[k] = "_";
       if (p.chase) r.region = "back";
       return r;

@@ -131,7 +131,7 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
       branch_.push_back(scene.lanes.diverges(int(li)) != 0 || scene.lanes.merges(int(li)));
     }
   // "in the bus lane": the map's lanes of that use; a map without one leaves the start free.
-  if (m_.lane_use) use_lanes_ = language::lanes_for_use(scene.lanes, *m_.lane_use);
+  if (m_.lane_use) use_lanes_ = language::lanes_for_use(scene, *m_.lane_use);
   if (m_.junction) junction_ = scene.lanes.junction_ahead(ego_.p, ego_.yaw);
   const auto ego_lane = scene.lanes.containing(ego_.p);
   for (const auto& l : ego_lane)
@@ -190,8 +190,14 @@ PlanResult Planner::run_once() {
   if (auto parked = parked_off_lane()) return *parked;
   std::vector<Candidate> cands = m_.relative ? relative_candidates() : region_candidates();
   if (cands.empty()) {
-    result.reason = m_.relative ? "no lane position " + m_.relative->region + " of " + m_.relative->to +
-                                      " is free on the lane map"
+    const std::string& region = m_.relative ? m_.relative->region : "";
+    const std::string where = region == "front"    ? "in front of "
+                              : region == "back"   ? "behind "
+                              : region == "beyond" ? "past "
+                              : region == "at"     ? "in the place of "
+                              : region == "opposite" ? "opposite "
+                                                     : region + " of ";
+    result.reason = m_.relative ? "no lane position " + where + m_.relative->to + " is free on the lane map"
                                 : "no lane in the " + describe_placement() + " region matches the request";
     return result;
   }

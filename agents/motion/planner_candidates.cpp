@@ -363,8 +363,12 @@ std::vector<Candidate> Planner::relative_candidates() const {
       s0 = pos.s;
       dir = std::cos(wrap(a.start.yaw - pos.tangent_yaw)) >= 0 ? 1 : -1;
     }
-  if (lane < 0) return out;
   const std::string region = m_.relative->region;
+  if (region == "opposite") {
+    opposite_candidates(out);
+    return out;
+  }
+  if (lane < 0) return out;
   const double base_gap = (a.size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0;
   if (region == "at") {  // in its place: the anchor's own stretch of lane
     const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
@@ -387,8 +391,10 @@ std::vector<Candidate> Planner::relative_candidates() const {
             if (s >= 0 && s <= l.length()) out.push_back({int(li), s, legal_dir(l), true, shift + std::abs(pos.lateral)});
           }
       }
+  } else if (region == "beyond") {
+    beyond_candidates(lane, s0, dir, out);
   } else if (region == "front" || region == "back") {
-    const int k = region == "front" ? 1 : -1;
+    const int k = region == "back" ? -1 : 1;
     // Ahead of or behind a moving vehicle: a second's headway at its speed (at most 20 m), not
     // bumper to bumper.
     const double headway = a.speed_mps > 0.5 ? std::min(a.speed_mps * 1.0, 20.0) : 0.0;
@@ -428,25 +434,6 @@ std::vector<Candidate> Planner::relative_candidates() const {
     if (!ds) c.dir = -c.dir;
   }
   return out;
-}
-
-// Beside an anchor standing across its lane (a bay of a row of perpendicular parking): along the
-// row, on its `side` (+1 its left) first, then on the other ("next to the motorbike" says no side).
-void Planner::beside_in_row(int lane, double s0, int dir, int side, std::vector<Candidate>& out) const {
-  const Anchor& a = *req_.anchor;
-  const double tangent = scene_.lanes.tangent_yaw_at(lane, s0);
-  const double left_along = -std::sin(a.start.yaw) * std::cos(tangent) + std::cos(a.start.yaw) * std::sin(tangent);
-  const double gap = (a.size_lwh.y() + req_.size_lwh.y()) / 2 + 0.8;
-  const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
-                      (a.speed_mps < 0.5 && nothing_said_about_motion());
-  for (int pass = 0; pass < 2; ++pass) {
-    const double k = (pass == 0 ? side : -side) * (left_along >= 0 ? 1 : -1);
-    for (double extra = 0; extra < 15; extra += 0.5) {
-      const double s = s0 + k * (gap + extra);
-      if (s >= 0 && s <= scene_.lanes.lanes()[size_t(lane)].length())
-        out.push_back({lane, s, dir, parked, extra + 5.0 * pass});
-    }
-  }
 }
 
 // Whether a driving lane of the ego's way runs one lane width to `side` (+1 left) of `lane`,

@@ -123,6 +123,8 @@ class Planner {
   void place_by_junction(const std::string& placement, double widen, Region& region) const;
   std::vector<Candidate> relative_candidates() const;
   void beside_in_row(int lane, double s0, int dir, int side, std::vector<Candidate>& out) const;
+  void opposite_candidates(std::vector<Candidate>& out) const;
+  void beyond_candidates(int lane, double s0, int dir, std::vector<Candidate>& out) const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
   Evaluated evaluate_at(const Candidate& c, double speed, double wait_s = 0, int join_side = 0) const;

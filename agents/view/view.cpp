@@ -13,6 +13,18 @@ namespace {
 
 using Words = std::vector<std::string>;
 
+// The lengths a view moves by, and metres per unit (a lane is taken as 3.5 m wide).
+const std::initializer_list<std::string_view> kLengthUnits = {
+    "meters", "meter", "m", "feet", "foot", "ft", "yards", "yard", "centimeters", "cm", "lanes", "lane"};
+
+double meters_per(const std::string& unit) {
+  if (unit == "feet" || unit == "foot" || unit == "ft") return 0.3048;
+  if (unit == "yards" || unit == "yard") return 0.9144;
+  if (unit == "centimeters" || unit == "cm") return 0.01;
+  if (unit == "lanes" || unit == "lane") return 3.5;
+  return 1.0;
+}
+
 // The axis and sign a direction word means, or none.
 std::optional<std::pair<int, double>> direction_word(const std::string& w) {
   if (w == "ahead" || w == "forward" || w == "forwards" || w == "front" || w == "further") return std::pair{0, 1.0};
@@ -41,8 +53,7 @@ bool directions_lead(const Words& w, const std::vector<text::Quantity>& distance
 
 // "three metres up and two to the left": a bare number after a distance takes its unit.
 Words with_units(Words w) {
-  static const std::initializer_list<std::string_view> kUnits = {"meters", "meter", "m", "feet", "foot", "ft",
-                                                                  "centimeters", "cm", "lanes", "lane"};
+  static const std::initializer_list<std::string_view> kUnits = kLengthUnits;
   // "back ten metres and up one": the number after the direction word.
   for (size_t i = 1; i + 1 < w.size(); ++i) {
     size_t used = 0;
@@ -55,8 +66,7 @@ Words with_units(Words w) {
     size_t used = 0;
     if (w[i - 1] != "and" || !text::number_at(w, i, &used) || used != 1) continue;
     if (!direction_word(w[i + 1]) && w[i + 1] != "to") continue;
-    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)),
-                                         {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm", "lanes", "lane"});
+    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)), kLengthUnits);
     if (!before.empty()) w.insert(w.begin() + long(i) + 1, w[before.back().end - 1]);
   }
   return w;
@@ -136,17 +146,12 @@ void add_translations(const Words& w_in, ViewChange& v) {
     for (size_t i = q.end; i < std::min(wu.size(), q.end + 3); ++i)
       if (wu[i] == "left" || wu[i] == "right") wu[i] = "_";
   }
-  const auto distances =
-      text::quantities(wu, {"meters", "meter", "m", "feet", "foot", "ft", "centimeters", "cm", "lanes", "lane"});
+  const auto distances = text::quantities(wu, kLengthUnits);
   const bool lead = directions_lead(wu, distances);
   for (size_t k = 0; k < distances.size(); ++k) {
     const auto& q = distances[k];
     const std::string unit = wu[q.end - 1];
-    // "two lanes to the left": a lane is taken as 3.5 m wide.
-    const double f = (unit == "feet" || unit == "foot" || unit == "ft")       ? 0.3048
-                     : (unit == "centimeters" || unit == "cm")                ? 0.01
-                     : (unit == "lanes" || unit == "lane")                    ? 3.5
-                                                                              : 1.0;
+    const double f = meters_per(unit);
     auto after = [&]() -> std::optional<std::pair<int, double>> {
       const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : wu.size();
       for (size_t i = q.end; i < std::min(next_start, q.end + 4); ++i) {

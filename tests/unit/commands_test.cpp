@@ -131,7 +131,8 @@ TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
                                     std::pair{"commands-blind-v21.jsonl", 0.96},
                                     std::pair{"commands-blind-v23.jsonl", 0.95},
                                     std::pair{"commands-blind-v24.jsonl", 0.9},
-                                    std::pair{"commands-blind-v25.jsonl", 0.9}}) {
+                                    std::pair{"commands-blind-v25.jsonl", 0.9},
+                                    std::pair{"commands-blind-v26.jsonl", 0.95}}) {
     const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file);
     ASSERT_GE(s.total, 40) << file;
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
@@ -139,8 +140,8 @@ TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
   }
 }
 
-// Blind sets v22 and v23- to v25-nuscenes: commands on a real recording (nuScenes scene-0916 as `chatsim
-// scene import nuscenes` writes it), each frozen before its first run (0.53; 0.70; 0.71; 0.60).
+// Blind sets v22 and v23- to v26-nuscenes: commands on a real recording (nuScenes scene-0916 as `chatsim
+// scene import nuscenes` writes it), each frozen before its first run (0.53; 0.70; 0.71; 0.60; 0.70).
 TEST(Commands, BlindSetOnARealRecordingKeepsItsScore) {
   const auto data = test_support::shared_commands_dir().parent_path() / "nuscenes-scene-0916";
   if (!fs::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
@@ -152,7 +153,8 @@ TEST(Commands, BlindSetOnARealRecordingKeepsItsScore) {
   for (const auto& [file, floor, size] : {std::tuple{"commands-blind-v22-nuscenes.jsonl", 0.95, 60},
                                           std::tuple{"commands-blind-v23-nuscenes.jsonl", 0.9, 20},
                                           std::tuple{"commands-blind-v24-nuscenes.jsonl", 0.85, 14},
-                                          std::tuple{"commands-blind-v25-nuscenes.jsonl", 0.8, 10}}) {
+                                          std::tuple{"commands-blind-v25-nuscenes.jsonl", 0.8, 10},
+                                          std::tuple{"commands-blind-v26-nuscenes.jsonl", 0.9, 10}}) {
     const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file, dir);
     EXPECT_EQ(s.total, size) << file;
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
