@@ -19,6 +19,7 @@ import layouts_v23
 import layouts_v24
 import layouts_v25
 import layouts_v26
+import layouts_v27
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -412,3 +413,4 @@ if __name__ == "__main__":
     layouts_v24.main()
     layouts_v25.main()
     layouts_v26.main()
+    layouts_v27.main()
