@@ -35,7 +35,8 @@ AssetRequest parse_asset(const std::string& instruction) {
   // tailgating the orange car").
   size_t rel = text::find_any(w, {"toward the", "near the", "where the", "instead of the", "in place of the",
                                   "between the", "between two", "among the", "overtake the", "overtakes the",
-                                  "overtaking the", "pass the", "passing the", "like the", "same as the"});
+                                  "overtaking the", "pass the", "passing the", "like the", "same as the",
+                                  "same color as", "same shade as", "same size as", "same type as"});
   for (const auto& r : lexicon::relation_phrases())
     for (const char* det : {"the", "it", "that", "this"})
       rel = std::min(rel, text::find_phrase(w, r.phrase + " " + det));

@@ -87,8 +87,10 @@ json start_box(const scene::Scene& scene, const scene::ObjectTrack& o) {
   };
   const double dt = time_of(last.frame) - time_of(first.frame);
   const double speed = dt > 0 ? (last.center - first.center).head<2>().norm() / dt : 0.0;
-  return {{"id", o.id}, {"x", first.center.x()}, {"y", first.center.y()}, {"yaw", first.yaw},
-          {"size_lwh", {o.size_lwh.x(), o.size_lwh.y(), o.size_lwh.z()}}, {"speed_mps", speed}, {"wrong_way", false}};
+  json box{{"id", o.id}, {"x", first.center.x()}, {"y", first.center.y()}, {"yaw", first.yaw},
+           {"size_lwh", {o.size_lwh.x(), o.size_lwh.y(), o.size_lwh.z()}}, {"speed_mps", speed}, {"wrong_way", false}};
+  if (o.color_rgb) box["color_rgb"] = *o.color_rgb;  // "the same colour as the coach"
+  return box;
 }
 
 class DeletionAgent : public DecisionAgent {

@@ -185,9 +185,14 @@ void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention
   // "the last parked car", "the second to last truck": counted from the far end of the row.
   else if (text::has_any(p, {"last", "penultimate", "final"})) s.order = "farthest";
   // "the largest vehicle", "the smallest car": by the size of its box.
-  if (text::has_any(p, {"largest", "biggest", "longest", "tallest", "bulkiest", "heaviest"})) s.order = "largest";
-  else if (text::has_any(p, {"smallest", "tiniest", "shortest", "littlest"})) s.order = "smallest";
-  if (s.order == "largest" || s.order == "smallest") s.quantity = "one";
+  // "the larger of the two", "the slower of the cars ahead": a comparative picks one as well.
+  if (text::has_any(p, {"largest", "biggest", "longest", "tallest", "bulkiest", "heaviest", "larger", "bigger",
+                        "longer", "taller"}))
+    s.order = "largest";
+  else if (text::has_any(p, {"smallest", "tiniest", "shortest", "littlest", "smaller", "shorter"})) s.order = "smallest";
+  else if (text::has_any(p, {"slowest", "slower"})) s.order = "slowest";
+  else if (text::has_any(p, {"fastest", "faster", "quickest", "quicker", "speediest"})) s.order = "fastest";
+  if (s.order == "largest" || s.order == "smallest" || s.order == "slowest" || s.order == "fastest") s.quantity = "one";
   if (text::has_any(p, {"penultimate"})) {
     s.nth = 2;
     s.quantity = "one";
@@ -203,7 +208,9 @@ void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention
     for (size_t i = 0; i < types.front().begin; ++i) {
       size_t used = 0;
       const auto v = text::number_at(p, i, &used);
-      if (v && *v >= 2 && i + used <= types.front().begin) {
+      // "the slower of the two cars": how many there are to pick from, not how many to remove.
+      const bool group = i >= 2 && p[i - 1] == "the" && p[i - 2] == "of";
+      if (v && *v >= 2 && i + used <= types.front().begin && !group) {
         s.quantity = "n";
         s.n = int(*v);
       }
@@ -216,6 +223,23 @@ void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention
     s.quantity = "n";
     s.n = 2;
   }
+}
+
+// "the taxi at the front of the queue", "the car at the back of the line": the one with none of
+// the others just ahead of it (or behind it), not one in front of the ego.
+bool queue_end(Words& p, Selector& s) {
+  for (const char* end : {"front", "head", "back", "end", "rear", "tail"})
+    for (const char* line : {"queue", "line", "row"}) {
+      const std::string phrase = std::string(end) + " of the " + line;
+      const size_t at = text::find_phrase(p, phrase);
+      if (at == std::string::npos) continue;
+      const std::string e = end;
+      s.order = e == "front" || e == "head" ? "queue_head" : "queue_tail";
+      s.quantity = "one";
+      for (size_t k = at; k < at + 3; ++k) p[k] = "_";  // "queue" stays: it says they wait
+      return true;
+    }
+  return false;
 }
 
 Selector parse_phrase(const Words& said, const Selector* previous) {
@@ -264,7 +288,10 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
     s.road_side = "far";
   else if (text::has_any(p, {"my side", "our side", "this side", "near side", "nearside", "same side"}))
     s.road_side = "near";
-  if (text::has_any(p, {"coming toward", "toward me", "toward us", "approaching", "coming at"})) s.approaching = true;
+  // "coming down the hill / the road": toward the ego, which is going up it.
+  if (text::has_any(p, {"coming toward", "toward me", "toward us", "approaching", "coming at", "coming down",
+                        "heading down", "descending", "downhill"}))
+    s.approaching = true;
   // "the truck behind it": placed by the object the phrase before named, not by the ego.
   if (previous != nullptr) {
     if (text::has_any(p, {"behind it", "behind that one", "after it"})) s.of_previous = "behind";
@@ -289,12 +316,14 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   // "the left lane" names a lane, not a side: the side words only count outside a lane phrase.
   const bool side_is_lane = s.lane == "left" || s.lane == "right";
   if (s.of_previous) {
+  } else if (queue_end(p, s)) {
   } else if (text::has_any(p, {"in front", "ahead", "front"})) s.region = "front";
   else if (text::has_any(p, {"behind", "back", "rear"})) s.region = "back";
   else if (!side_is_lane && text::has_any(p, {"left"})) s.region = "left";
   else if (!side_is_lane && text::has_any(p, {"right"})) s.region = "right";
   if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting",
-                        "broken down", "stalled", "abandoned", "crashed", "disabled"}))
+                        "broken down", "stalled", "abandoned", "crashed", "disabled", "queue", "queuing", "queueing",
+                        "queued"}))
     s.moving = false;
   else if (text::has_any(p, {"backing", "backs out", "backs up", "reversing", "reverses", "in reverse",
                              "going backwards", "going backward"}))
@@ -382,8 +411,12 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   if (auto u = lexicon::unsupported_noun(w); u && lexicon::find_types(text::words(*u)).empty() && !named_before(w, *u))
     r.unsupported = *u;
   size_t except_len = 0;
+  // "every vehicle that isn't a taxi": a relative clause that negates is an exception too.
   const size_t except_at = text::find_any(w, {"except", "but not", "other than", "apart from", "besides", "but the",
-                                              "excluding", "save for", "but leave", "but keep"}, &except_len);
+                                              "excluding", "save for", "but leave", "but keep", "that isnt",
+                                              "that arent", "which isnt", "which arent", "that is not", "that are not",
+                                              "which is not", "which are not", "that arent a", "not counting"},
+                                          &except_len);
   const size_t end = except_at == std::string::npos ? w.size() : except_at;
   // Skip the verb: the phrase starts after remove/delete/erase/get rid of ... Only the first verb
   // and the words right after it count: the "of" in "my side of the road" is not "rid of".

@@ -79,6 +79,22 @@ bool matches(const Selector& s, const Candidate& c) {
 }
 
 
+// The front (or back) of a queue: those with none of the others within 12 m ahead of them (or
+// behind), within 2 m to the side, along their heading.
+void keep_queue_ends(bool head, std::vector<const Candidate*>& m) {
+  std::vector<const Candidate*> ends;
+  for (const auto* c : m) {
+    const Eigen::Vector2d fwd(std::cos(c->yaw), std::sin(c->yaw));
+    const bool blocked = std::any_of(m.begin(), m.end(), [&](const Candidate* o) {
+      const Eigen::Vector2d d = o->pe - c->pe;
+      const double along = fwd.dot(d), side = std::abs(fwd.x() * d.y() - fwd.y() * d.x());
+      return o != c && side < 2.0 && (head ? along > 0 : along < 0) && std::abs(along) < 12.0;
+    });
+    if (!blocked) ends.push_back(c);
+  }
+  if (!ends.empty()) m = ends;
+}
+
 // "parked" where the map has a kerb: not a car waiting in a lane (if any is left); "the bike"
 // with no bicycle about: a motorbike is a bike too.
 void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::vector<Candidate>& cands,
@@ -162,7 +178,19 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
     if (!tall.empty()) m = tall;
     else if (van && !cars.empty()) m = cars;
   }
+  // "the taxis" where the scene labels none as such: a taxi rank's yellow cars, if there are any.
+  if (!types.empty() && types.front().type.type == "taxi") {
+    std::vector<const Candidate*> yellow;
+    for (const auto* c : m)
+      if (c->object->color_rgb && lexicon::color_class(*c->object->color_rgb) == "yellow") yellow.push_back(c);
+    if (!yellow.empty()) m = yellow;
+  }
+  if (t.order == "queue_head" || t.order == "queue_tail") keep_queue_ends(t.order == "queue_head", m);
   if (t.order == "farthest") std::reverse(m.begin(), m.end());
+  if (t.order == "slowest" || t.order == "fastest")
+    std::stable_sort(m.begin(), m.end(), [&](const Candidate* a, const Candidate* b) {
+      return t.order == "fastest" ? a->speed > b->speed : a->speed < b->speed;
+    });
   if (t.order == "largest" || t.order == "smallest") {
     const auto volume = [](const Candidate* c) { return c->object->size_lwh.prod(); };
     std::stable_sort(m.begin(), m.end(), [&](const Candidate* a, const Candidate* b) {
@@ -181,6 +209,9 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
 void keep_on_lanes_of_use(const Selector& t, const scene::Scene& scene, std::vector<const Candidate*>& m) {
   if (!t.lane_use) return;
   const auto lanes = language::lanes_for_use(scene, *t.lane_use);
+  // A lane named by a word of its own ("the drop-off lane") that the map does not have selects
+  // nothing, rather than everything.
+  if (lanes.empty() && !language::is_known_use(*t.lane_use)) m.clear();
   if (lanes.empty()) return;
   // A car park is an area: a car on its way out, just off the aisle, is still in it.
   const bool area = *t.lane_use == "car_park";
@@ -313,8 +344,13 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
   for (const auto& said : r.except) {
     Selector e = said;
     if (e.lane == "main") e.lane = main_road(scene);
+    // What an exception names is read as a selection is ("the taxis": the yellow cars, "the vans":
+    // the tall ones), all of it.
+    std::vector<const Candidate*> m;
     for (const auto& c : cands)
-      if (matches(e, c)) chosen.erase(std::remove(chosen.begin(), chosen.end(), c.object->id), chosen.end());
+      if (matches(e, c)) m.push_back(&c);
+    prefer_said_kind(e, m);
+    for (const auto* c : m) chosen.erase(std::remove(chosen.begin(), chosen.end(), c->object->id), chosen.end());
   }
   for (const auto& c : cands)
     if (std::find(chosen.begin(), chosen.end(), c.object->id) != chosen.end() &&

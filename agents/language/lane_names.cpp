@@ -58,6 +58,12 @@ bool says_where(const std::string& w) {
 
 }  // namespace
 
+bool is_known_use(const std::string& use) {
+  if (use.starts_with("turn") || use == "roundabout" || use == "car_park" || use == "lay_by" || use == "ego_turn")
+    return true;
+  return std::any_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return use == r.role; });
+}
+
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
   // "the street we're turning into", "the road it turns onto": where the ego's path goes after
   // its turn in the recording.
@@ -88,7 +94,13 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
       return LaneName{"lay_by", at, at + text::words(place).size()};
   for (size_t i = 1; i < w.size(); ++i) {
     // "the service road", "the farm track": a name the map's lane ids may use.
-    if ((w[i] == "road" || w[i] == "track" || w[i] == "lane") && !says_where(w[i - 1]) &&
+    // "the drop-off lane", "the pick-up lane": a hyphenated name the map writes as one word.
+    if ((w[i] == "road" || w[i] == "track" || w[i] == "lane") && i >= 2 &&
+        (w[i - 1] == "off" || w[i - 1] == "up" || w[i - 1] == "out" || w[i - 1] == "in") && !says_where(w[i - 2]))
+      return LaneName{w[i - 2] + w[i - 1], i - 2, i + 1};
+    // "the through lanes": a plural only after "the" ("change lanes" names none).
+    const bool named_lanes = w[i] == "lanes" && i >= 2 && w[i - 2] == "the";
+    if ((w[i] == "road" || w[i] == "track" || w[i] == "lane" || named_lanes) && !says_where(w[i - 1]) &&
         std::none_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return w[i - 1] == r.word; }) &&
         std::isalpha(static_cast<unsigned char>(w[i - 1].front())))
       return LaneName{w[i - 1], i - 1, i + 1};

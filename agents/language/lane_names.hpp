@@ -20,6 +20,10 @@ struct LaneName {
   size_t end = 0;
 };
 
+// Whether a use is one of the interpreter's own (bus, turn..., cycle, ego_turn, ...), as opposed
+// to a word of the map's ("service", "dropoff") that only the map's lane ids can give a meaning.
+bool is_known_use(const std::string& use);
+
 // The first lane named by its use in w, if any.
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w);
 

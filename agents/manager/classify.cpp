@@ -48,6 +48,17 @@ bool refers_to_added(const Words& w_in) {
 // road. False when the clause is none of these.
 bool classify_whole(const Words& c, Instruction& in) {
   const std::string first = c.front();
+  // "a green one instead", "a Jeep instead": what was just added, said again differently.
+  if ((first == "a" || first == "an") && has_any(c, {"instead", "rather"}) &&
+      (has_any(c, {"one"}) || mentions_vehicle(c)) && !has_any(c, {"where", "in its place", "of the", "there"})) {
+    Words said;
+    for (const auto& x : c)
+      if (x != "instead" && x != "rather") said.push_back(x);
+    in.kind = "revise";
+    in.target = "it";
+    in.text = "make it " + text::join(said);
+    return true;
+  }
   // "undo that", "scratch that": the whole last round, whatever it did ("undo the deletion" is a
   // restore, below).
   const bool of_deletion = has_any(c, {"deletion", "deletions", "removal", "delete", "deleted", "removed", "remove"});
@@ -126,6 +137,17 @@ bool classify_whole(const Words& c, Instruction& in) {
         in.text += " " + text::join(c, every + 1);
       return true;
     }
+  }
+  // "I need the forecourt empty", "I want the drop-off lane clear": a place said to be empty.
+  static const char* kEmpty[] = {"empty", "clear", "cleared", "emptied", "deserted"};
+  const auto place_from = c.end() - long(std::min<size_t>(c.size(), 6));
+  if (c.size() >= 3 && !mentions_vehicle(c) &&
+      std::any_of(std::begin(kEmpty), std::end(kEmpty), [&](const char* e) { return c.back() == e; }) &&
+      std::find(place_from, c.end() - 2, "the") != c.end() - 2) {
+    in.kind = "delete";
+    in.text = "remove all vehicles";
+    if (const auto lane = language::find_lane_name(c)) in.text += " in the " + text::join(c, lane->begin, lane->end);
+    return true;
   }
   if (has_any(c, {"road empty", "empty road", "empty the road", "empty street", "street empty", "no cars", "no vehicles",
                   "clear the road", "clear the street", "deserted", "without any cars", "without cars", "without vehicles",
@@ -232,7 +254,7 @@ Words fill_addition(const Words& c) {
   // "fill the car park", "fill up the parking lane": a place for parking, filled with parked cars.
   const auto area = language::find_lane_name(c);
   if (link == std::string::npos && (c[0] == "fill" || c[0] == "pack") &&
-      ((area && area->use == "car_park") ||
+      ((area && (area->use == "car_park" || area->use == "lay_by")) ||
        text::has_any(c, {"parking", "bays", "bay", "spaces", "spots", "stalls"}))) {  // "fill the empty bays"
     Words out{"add", "a", "row", "of", "parked", "cars", "in"};
     out.insert(out.end(), c.begin() + (c[1] == "up" ? 2 : 1), c.end());

@@ -126,7 +126,7 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
   // Fillers and politeness in any order ("hey, can you ...", "ok so please ..."), until none is left.
   static const char* fillers[] = {"additionally", "also", "then", "now", "please", "and", "finally", "next", "first",
                                   "lastly", "ok", "okay", "actually", "sorry", "wait", "oh", "hmm", "hey", "hi",
-                                  "hello", "so", "um", "uh", "well", "alright"};
+                                  "hello", "so", "um", "uh", "well", "alright", "maybe", "perhaps", "possibly"};
   // "I want the car park to look busy, so could you fill the bays with parked cars": what is asked
   // follows "so"; what comes before it is why.
   for (auto& c : out)
@@ -293,7 +293,13 @@ std::vector<Instruction> titled(const std::string& sentence, size_t colon) {
   const bool scene_title = text::has_any(text::words(sentence.substr(0, colon)),
                                          {"look like", "looks like", "as if", "as though", "feel like"});
   const auto unclear = [](const Instruction& i) { return i.kind == "unclear"; };
-  if ((scene_title || std::all_of(title.begin(), title.end(), unclear)) && !std::all_of(body.begin(), body.end(), unclear))
+  // "Busy morning: a few more cars parked on the left": a scene named by a mood, which the detail
+  // makes (not a second scene on top of it).
+  const bool mood_title = std::all_of(title.begin(), title.end(), [](const Instruction& i) {
+    return i.kind == "busy_road" && !mentions_vehicle(text::words(i.text));
+  });
+  if ((scene_title || mood_title || std::all_of(title.begin(), title.end(), unclear)) &&
+      !std::all_of(body.begin(), body.end(), unclear))
     title.clear();
   title.insert(title.end(), body.begin(), body.end());
   return title;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 #include "agents/manager/classify.hpp"
 #include "agents/manager/manager.hpp"
@@ -18,6 +19,7 @@ namespace chatsim::agents::manager {
 void Manager::continue_previous_round(const Conversation& c, const std::string& command,
                                       std::vector<Instruction>& instructions) {
   if (c.rounds.empty() || instructions.size() != 1) return;
+  if (same_again(c, command, instructions.front())) return;
   if (instructions.front().kind != "add" && instructions.front().kind != "unclear") return;
   const auto w = text::words(command);
   const bool as_well = w.size() >= 2 && w[w.size() - 2] == "as" && w.back() == "well";
@@ -32,10 +34,51 @@ void Manager::continue_previous_round(const Conversation& c, const std::string& 
   static const std::string kDelete = "delete: ";  // as run_round records an instruction
   if (last.empty() || !last.back().get<std::string>().starts_with(kDelete)) return;
   instructions.front().kind = "delete";
-  if (text::find_phrase(w, "next one") != std::string::npos || text::find_phrase(w, "one more") != std::string::npos)
+  const bool next = text::find_phrase(w, "next one") != std::string::npos ||
+                    text::find_phrase(w, "one more") != std::string::npos ||
+                    (text::find_phrase(w, "the next") != std::string::npos && !detail::mentions_vehicle(w));
+  if (next)
     instructions.front().text = last.back().get<std::string>().substr(kDelete.size());
   else
     instructions.front().text = "remove " + instructions.front().text;
+}
+
+// "same again for the coach" after a deletion removes the coach; "the same again but silver" after
+// an addition adds another like it, silver. The last round's last instruction, done again.
+bool Manager::same_again(const Conversation& c, const std::string& command, Instruction& in) {
+  const auto w = text::words(command);
+  const size_t at = text::find_any(w, {"same again", "do the same", "same for", "same thing", "likewise"});
+  if (at == std::string::npos) return false;
+  const auto& last = c.rounds.back().at("instructions");
+  if (last.empty()) return false;
+  const std::string said = last.back().get<std::string>();
+  const size_t colon = said.find(": ");
+  if (colon == std::string::npos) return false;
+  const std::string kind = said.substr(0, colon);
+  std::string text = said.substr(colon + 2);
+  size_t object = text::find_any(w, {"for", "to", "with"});
+  const size_t but = text::find_phrase(w, "but");
+  if (kind == "delete" && object != std::string::npos && object > at) {
+    in = Instruction{"delete", "remove " + text::join(w, object + 1), "", 1};
+    return true;
+  }
+  if (kind != "add") return false;
+  // "but silver": the new colour replaces the one said.
+  if (but != std::string::npos) {
+    const std::vector<std::string> changes(w.begin() + long(but) + 1, w.end());
+    const auto colors = lexicon::find_colors(changes);
+    std::vector<std::string> words = text::words(text);
+    if (!colors.empty()) {
+      std::erase_if(words, [](const std::string& x) { return lexicon::is_color_word(x); });
+      const auto article = std::find_if(words.begin(), words.end(), [](const std::string& x) {
+        return x == "a" || x == "an" || x == "the";
+      });
+      if (article != words.end()) words.insert(article + 1, colors.front().name);
+    }
+    text = text::join(words);
+  }
+  in = Instruction{"add", text, "", 1};
+  return true;
 }
 
 // "delete the bus", then "no, delete the truck instead": a round that corrects the last one

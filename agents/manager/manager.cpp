@@ -351,7 +351,7 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
                                                        : "no added vehicle matches '" + in.target + "'"}});
     return;
   }
-  const std::string rest = strip_reference(in.text, in.target);
+  const std::string rest = colours_of_references(c, strip_reference(in.text, in.target));
   const auto decided = call("motion", c, "decide", {{"instruction", rest}});
   if (!decided.ok) throw std::runtime_error("motion agent: " + decided.message);
   if (refused_for_range(c, in.text, decided.result["intent"])) return;
@@ -367,12 +367,14 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
     if (!asset_changed && said.empty()) continue;
     changed_any = true;
     const bool resized = asset_changed && asset.result["choice"]["size_lwh"] != v.asset["size_lwh"];
+    const json before = v.asset;
     if (asset_changed) v.asset = asset.result["choice"];
     if (said.empty() && !resized) {  // a new colour or brand of the same size: the motion stands
       round.done.push_back("Revised " + v.id + ".");
       continue;
     }
     if (replan_revised(c, t, said, in.text)) round.done.push_back("Revised " + v.id + ".");
+    else v.asset = before;  // a bigger vehicle that does not fit stays what it was
   }
   if (!changed_any && revise_count(c, in, targets, round)) return;
   if (!changed_any)

@@ -87,6 +87,7 @@ class Manager {
   void remember_for_undo(Conversation& c);
   // Back to the state kept newest in c.undo (which it drops), keeping the rounds said and the unresolved.
   void back_to_round_start(Conversation& c);
+  static bool same_again(const Conversation& c, const std::string& command, Instruction& in);
   static void continue_previous_round(const Conversation& c, const std::string& command,
                                       std::vector<Instruction>& instructions);
   bool replaces_last_round(const Conversation& c, const std::string& command,
@@ -109,6 +110,8 @@ class Manager {
   // recorded one the deletion agent selects by the same words; nullopt when none matches.
   std::optional<nlohmann::json> find_anchor(Conversation& c, const std::string& reference, int except);
   std::optional<nlohmann::json> ordinal_of_removed(Conversation& c, const std::string& reference);
+  // "make it the same colour as the coach": the reference's colour said as a word ("white").
+  std::string colours_of_references(Conversation& c, const std::string& text);
   nlohmann::json others_json(const Conversation& c, int except) const;
   nlohmann::json edit_state(const Conversation& c) const;
   AgentOutcome call(const std::string& kind, const Conversation& c, const std::string& action, nlohmann::json args);

@@ -45,6 +45,20 @@ std::optional<json> Manager::ordinal_of_removed(Conversation& c, const std::stri
   return anchor;
 }
 
+std::string Manager::colours_of_references(Conversation& c, const std::string& text) {
+  const auto w = text::words(text);
+  size_t len = 0;
+  const size_t at = text::find_any(w, {"same color as", "same shade as", "same paint as"}, &len);
+  if (at == std::string::npos) return text;
+  size_t end = at + len;
+  while (end < w.size() && w[end] != "and" && w[end] != "but" && w[end] != "with") ++end;
+  const auto anchor = find_anchor(c, text::join(w, at + len, end), -1);
+  if (!anchor || !anchor->contains("color_rgb")) return text;
+  const size_t from = at > 0 && w[at - 1] == "the" ? at - 1 : at;
+  return text::join(w, 0, from) + " " + lexicon::color_class((*anchor)["color_rgb"].get<lexicon::Rgb>()) + " " +
+         text::join(w, end);
+}
+
 std::optional<json> Manager::find_anchor(Conversation& c, const std::string& reference, int except) {
   if (const auto it = c.recorded_anchors.find(reference); it != c.recorded_anchors.end()) return it->second;
   if (reference == "removed") {  // "in its place": the vehicle removed last
