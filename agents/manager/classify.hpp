@@ -14,6 +14,13 @@ const std::vector<std::string>& delete_verbs();
 // A vehicle noun or make among the words (not a cone, barrier or pedestrian).
 bool mentions_vehicle(const std::vector<std::string>& words);
 
+// "have a tahoe come from the right" -> "add a tahoe come from the right"; other clauses unchanged
+// (said_as_addition.cpp).
+std::vector<std::string> causative_addition(const std::vector<std::string>& clause);
+// "fill the bays", "line the street with parked cars" -> "add a row of parked cars in ..."; other
+// clauses unchanged.
+std::vector<std::string> fill_addition(const std::vector<std::string>& clause);
+
 // The instruction one clause (its words, lower case, typos corrected) asks for.
 Instruction classify(const std::vector<std::string>& clause);
 
