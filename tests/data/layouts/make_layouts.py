@@ -20,6 +20,7 @@ import layouts_v24
 import layouts_v25
 import layouts_v26
 import layouts_v27
+import layouts_v28
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -414,3 +415,4 @@ if __name__ == "__main__":
     layouts_v25.main()
     layouts_v26.main()
     layouts_v27.main()
+    layouts_v28.main()
