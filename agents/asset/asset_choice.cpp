@@ -38,8 +38,13 @@ AssetRequest parse_asset(const std::string& instruction) {
                                   "overtaking the", "pass the", "passing the", "like the", "same as the",
                                   "same color as", "same shade as", "same size as", "same type as"});
   for (const auto& r : lexicon::relation_phrases())
-    for (const char* det : {"the", "it", "that", "this"})
-      rel = std::min(rel, text::find_phrase(w, r.phrase + " " + det));
+    for (size_t at = text::find_words(w, r.words); at != std::string::npos; at = text::find_words(w, r.words, at + 1)) {
+      const size_t next = at + r.words.size();
+      if (next < w.size() && (w[next] == "the" || w[next] == "it" || w[next] == "that" || w[next] == "this")) {
+        rel = std::min(rel, at);
+        break;
+      }
+    }
   if (rel != std::string::npos && rel > 0) w.resize(rel);
   AssetRequest r;
   auto types = lexicon::find_types(w);

@@ -52,10 +52,7 @@ int ordinal(const std::string& w) {
   static const char* words[] = {"first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth"};
   for (int i = 0; i < 8; ++i)
     if (w == words[i]) return i + 1;
-  if (w == "1st") return 1;
-  if (w == "2nd") return 2;
-  if (w == "3rd") return 3;
-  return 0;
+  return 0;  // "2nd" reaches here as "second" (text::words)
 }
 
 // "the tractor": an English noun the interpreter does not know where the thing to delete is
@@ -155,9 +152,8 @@ std::optional<Relation> split_relation(const Words& p) {
 // "within 16 m of me", "closer than 20 metres", "more than 30 m away": a bound on the distance
 // from the ego, said by the words just before (or after) the amount.
 void read_distance_bounds(const Words& p, Selector& s) {
-  for (const auto& q : text::quantities(p, {"meters", "meter", "m", "feet", "ft"})) {
-    const std::string& unit = p[q.end - 1];
-    const double metres = q.value * (unit == "feet" || unit == "ft" ? 0.3048 : 1.0);
+  for (const auto& q : text::quantities(p, text::length_units())) {
+    const double metres = q.value * text::meters_per(q.unit).value_or(1.0);
     const Words before(p.begin() + long(q.begin >= 3 ? q.begin - 3 : 0), p.begin() + long(q.begin));
     const Words after(p.begin() + long(q.end), p.begin() + long(std::min(p.size(), q.end + 2)));
     const auto ends_with = [&](std::initializer_list<std::string_view> phrases) {
@@ -255,6 +251,8 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
              at != std::string::npos && at + 3 < said.size() && (said[at + 3] == "left" || said[at + 3] == "right")) {
     s.lane_use = "turn_" + said[at + 3];  // in a turn lane when the map has one (selection.cpp)
     p[at + 3] = "_";
+  } else if (const auto place = language::find_place_word(said)) {
+    s.lane_use = place->use;  // "the cars at the pumps": its words stay for the other readings
   }
   const auto types = lexicon::find_types(p);
   if (!types.empty()) {
@@ -321,9 +319,11 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   else if (text::has_any(p, {"behind", "back", "rear"})) s.region = "back";
   else if (!side_is_lane && text::has_any(p, {"left"})) s.region = "left";
   else if (!side_is_lane && text::has_any(p, {"right"})) s.region = "right";
-  if (text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still", "waiting",
-                        "broken down", "stalled", "abandoned", "crashed", "disabled", "queue", "queuing", "queueing",
-                        "queued"}))
+  // "the cars waiting at the lights", "the last car in the queue": standing in a lane of traffic.
+  const bool waiting = text::has_any(p, {"waiting", "queuing", "queueing", "queued", "queue", "at the lights",
+                                         "at the light", "at the red light", "in traffic", "held up"});
+  if (waiting || text::has_any(p, {"parked", "stopped", "stationary", "static", "not moving", "standing", "still",
+                                   "broken down", "stalled", "abandoned", "crashed", "disabled"}))
     s.moving = false;
   else if (text::has_any(p, {"backing", "backs out", "backs up", "reversing", "reverses", "in reverse",
                              "going backwards", "going backward"}))
@@ -333,9 +333,7 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
     s.moving = true;
   // "the row of bays on the left", "the cars in the spaces": what stands in a bay is parked.
   s.parked = text::has_any(p, {"parked", "parking", "bay", "bays", "spaces", "spots", "parking space"});
-  // "the cars waiting at the lights", "the last car in the queue": standing in a lane of traffic.
-  s.waiting = !s.parked && text::has_any(p, {"waiting", "queuing", "queueing", "queued", "queue", "at the lights",
-                                             "at the light", "at the red light", "in traffic", "held up"});
+  s.waiting = waiting && !s.parked;
   // "the van that's double parked", "the car blocking my lane": standing in a lane of traffic.
   if (text::has_any(p, {"double parked", "blocking", "stopped in the road", "stopped in the street",
                         "in the middle of the road", "in the middle of the street", "stranded in"})) {
@@ -394,11 +392,10 @@ Words two_wheelers_named(Words w) {
 // "the car by the school", "everything near the lights": a vehicle (or "everything") named before
 // the thing, which only says where.
 bool named_before(const Words& w, const std::string& thing) {
-  const size_t at = text::find_phrase(w, thing);
-  const auto types = lexicon::find_types(Words(w.begin(), w.begin() + long(std::min(at, w.size()))));
+  const Words before(w.begin(), w.begin() + long(std::min(text::find_phrase(w, thing), w.size())));
+  const auto types = lexicon::find_types(before);
   return std::any_of(types.begin(), types.end(), [](const lexicon::TypeMention& t) { return t.type.type != "object"; }) ||
-         text::has_any(Words(w.begin(), w.begin() + long(std::min(at, w.size()))),
-                       {"everything", "anything", "whatever", "all", "one", "ones", "them", "it"});
+         text::has_any(before, {"everything", "anything", "whatever", "all", "one", "ones", "them", "it"});
 }
 
 }  // namespace
@@ -415,7 +412,7 @@ DeletionRequest parse_deletion(const std::string& instruction) {
   const size_t except_at = text::find_any(w, {"except", "but not", "other than", "apart from", "besides", "but the",
                                               "excluding", "save for", "but leave", "but keep", "that isnt",
                                               "that arent", "which isnt", "which arent", "that is not", "that are not",
-                                              "which is not", "which are not", "that arent a", "not counting"},
+                                              "which is not", "which are not", "not counting"},
                                           &except_len);
   const size_t end = except_at == std::string::npos ? w.size() : except_at;
   // Skip the verb: the phrase starts after remove/delete/erase/get rid of ... Only the first verb

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -79,20 +80,26 @@ bool matches(const Selector& s, const Candidate& c) {
 }
 
 
+// Of the matches, those `keep` accepts, if any is left: a preference, not a requirement.
+template <class Keep>
+void narrow_to(std::vector<const Candidate*>& m, Keep keep) {
+  std::vector<const Candidate*> kept;
+  std::copy_if(m.begin(), m.end(), std::back_inserter(kept), keep);
+  if (!kept.empty()) m = std::move(kept);
+}
+
 // The front (or back) of a queue: those with none of the others within 12 m ahead of them (or
 // behind), within 2 m to the side, along their heading.
 void keep_queue_ends(bool head, std::vector<const Candidate*>& m) {
-  std::vector<const Candidate*> ends;
-  for (const auto* c : m) {
+  const auto all = m;
+  narrow_to(m, [&](const Candidate* c) {
     const Eigen::Vector2d fwd(std::cos(c->yaw), std::sin(c->yaw));
-    const bool blocked = std::any_of(m.begin(), m.end(), [&](const Candidate* o) {
+    return std::none_of(all.begin(), all.end(), [&](const Candidate* o) {
       const Eigen::Vector2d d = o->pe - c->pe;
       const double along = fwd.dot(d), side = std::abs(fwd.x() * d.y() - fwd.y() * d.x());
       return o != c && side < 2.0 && (head ? along > 0 : along < 0) && std::abs(along) < 12.0;
     });
-    if (!blocked) ends.push_back(c);
-  }
-  if (!ends.empty()) m = ends;
+  });
 }
 
 // "parked" where the map has a kerb: not a car waiting in a lane (if any is left); "the bike"
@@ -100,20 +107,13 @@ void keep_queue_ends(bool head, std::vector<const Candidate*>& m) {
 void widen_or_narrow(const Selector& t, const scene::Scene& scene, const std::vector<Candidate>& cands,
                      std::vector<const Candidate*>& m) {
   // "parked" where the map has a kerb to park at: not a car waiting in a lane (if any is left).
-  if (t.parked && scene_has_parking(scene)) {
-    std::vector<const Candidate*> kerbside;
-    for (const auto* c : m)
-      if (!(c->lane.ego || c->lane.left || c->lane.middle || c->lane.right || c->lane.oncoming || c->lane.cross))
-        kerbside.push_back(c);
-    if (!kerbside.empty()) m = kerbside;
-  }
+  if (t.parked && scene_has_parking(scene))
+    narrow_to(m, [](const Candidate* c) {
+      return !(c->lane.ego || c->lane.left || c->lane.middle || c->lane.right || c->lane.oncoming || c->lane.cross);
+    });
   // "waiting at the lights": in a lane of traffic, not parked at the kerb (if any is left).
-  if (t.waiting) {
-    std::vector<const Candidate*> in_lane;
-    for (const auto* c : m)
-      if (c->lane.own >= 0 && !c->lane.parking && !c->lane.shoulder) in_lane.push_back(c);
-    if (!in_lane.empty()) m = in_lane;
-  }
+  if (t.waiting)
+    narrow_to(m, [](const Candidate* c) { return c->lane.own >= 0 && !c->lane.parking && !c->lane.shoulder; });
   // "the bike" with no bicycle about: a motorbike is a bike too. "The lorry" with no truck
   // labelled: an articulated one is labelled by its trailer (nuScenes), a tipper as construction.
   const auto widen_to = [&](std::initializer_list<const char*> categories) {
@@ -179,12 +179,10 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
     else if (van && !cars.empty()) m = cars;
   }
   // "the taxis" where the scene labels none as such: a taxi rank's yellow cars, if there are any.
-  if (!types.empty() && types.front().type.type == "taxi") {
-    std::vector<const Candidate*> yellow;
-    for (const auto* c : m)
-      if (c->object->color_rgb && lexicon::color_class(*c->object->color_rgb) == "yellow") yellow.push_back(c);
-    if (!yellow.empty()) m = yellow;
-  }
+  if (!types.empty() && types.front().type.type == "taxi")
+    narrow_to(m, [](const Candidate* c) {
+      return c->object->color_rgb && lexicon::color_class(*c->object->color_rgb) == "yellow";
+    });
   if (t.order == "queue_head" || t.order == "queue_tail") keep_queue_ends(t.order == "queue_head", m);
   if (t.order == "farthest") std::reverse(m.begin(), m.end());
   if (t.order == "slowest" || t.order == "fastest")

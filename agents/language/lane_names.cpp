@@ -6,6 +6,7 @@
 #include <iterator>
 #include <numbers>
 
+#include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 
 namespace chatsim::agents::language {
@@ -31,6 +32,7 @@ std::vector<std::string> id_words(const std::string& role) {
   if (role == "roundabout") return {"roundabout", "ring", "circle", "rotary", "circulatory"};
   if (role == "car_park") return {"carpark", "park", "lot", "garage"};
   if (role == "lay_by") return {"layby", "lay", "passing", "turnout", "pullout", "refuge"};
+  if (role == "fuel_station") return {"station", "pump", "pumps", "fuel", "petrol", "gas", "forecourt"};
   return {role};
 }
 
@@ -59,12 +61,35 @@ bool says_where(const std::string& w) {
 }  // namespace
 
 bool is_known_use(const std::string& use) {
-  if (use.starts_with("turn") || use == "roundabout" || use == "car_park" || use == "lay_by" || use == "ego_turn")
+  if (use.starts_with("turn") || use == "roundabout" || use == "car_park" || use == "lay_by" || use == "ego_turn" ||
+      use == "closed" || use == "fuel_station" || use.starts_with("place:"))
     return true;
   return std::any_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return use == r.role; });
 }
 
+namespace {
+
+// "the closed lane", "the coned-off lane", "the lane with the cones": a lane shut by works, which
+// the map does not say but the objects standing in it do (lanes_for_use).
+std::optional<LaneName> closed_lane(const std::vector<std::string>& w) {
+  static const std::vector<std::string_view> kShut{"closed", "blocked", "coned", "shut", "cordoned", "works",
+                                                   "roadworks", "construction", "fenced", "taped"};
+  const auto shut = [&](const std::string& x) { return std::find(kShut.begin(), kShut.end(), x) != kShut.end(); };
+  for (size_t i = 1; i < w.size(); ++i) {
+    if (w[i] != "lane" && w[i] != "lanes") continue;
+    if (w[i - 1] == "off" && i >= 2 && shut(w[i - 2])) return LaneName{"closed", i - 2, i + 1};
+    if (shut(w[i - 1])) return LaneName{"closed", i - 1, i + 1};
+    if (i + 3 < w.size() && w[i + 1] == "with" && w[i + 2] == "the" &&
+        text::has_any({w[i + 3]}, {"cones", "roadworks", "works", "barriers", "digger", "diggers"}))
+      return LaneName{"closed", i, i + 4};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
+  if (auto shut = closed_lane(w)) return shut;
   // "the street we're turning into", "the road it turns onto": where the ego's path goes after
   // its turn in the recording.
   for (size_t i = 0; i < w.size(); ++i) {
@@ -87,6 +112,11 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
   for (const char* place : {"car park", "carpark", "parking lot", "parking garage", "car lot", "parking structure"})
     if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
       return LaneName{"car_park", at, at + text::words(place).size()};
+  // "at the gas station", "on the forecourt": its pumps, entry and exit, and the bays beside them.
+  for (const char* place : {"gas station", "petrol station", "filling station", "service station", "fuel station",
+                            "gas stations", "petrol stations", "forecourt"})
+    if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
+      return LaneName{"fuel_station", at, at + text::words(place).size()};
   // "in the passing place", "pull into the lay-by": a place beside the road to stop at.
   for (const char* place : {"passing place", "passing places", "passing bay", "passing bays", "lay-by", "lay-bys",
                             "layby", "laybys", "lay by", "turnout", "turnouts", "pullout", "pullouts"})
@@ -172,7 +202,76 @@ std::vector<int> car_park_by_shape(const scene::LaneMap& map) {
   return out;
 }
 
+// "pumps" -> "pump": the map's ids may say either.
+std::string singular(const std::string& x) {
+  return x.size() > 3 && x.back() == 's' && x[x.size() - 2] != 's' ? x.substr(0, x.size() - 1) : x;
+}
+
+// The lanes a place word names ("pump", "pump#2"): ids with that word (or its singular) and, when
+// a number is said, that number.
+std::vector<int> lanes_of_place(const scene::LaneMap& map, const std::string& place) {
+  const size_t hash = place.find('#');
+  const std::string word = place.substr(0, hash);
+  std::vector<int> out = map.named(word);
+  if (out.empty()) out = map.named(singular(word));
+  if (hash == std::string::npos) return out;
+  const std::string number = place.substr(hash + 1);
+  std::erase_if(out, [&](int l) {
+    const std::string& id = map.lanes()[size_t(l)].id;
+    std::string digits;
+    for (const char c : id + "_") {
+      if (std::isdigit(static_cast<unsigned char>(c))) {
+        digits += c;
+        continue;
+      }
+      if (digits == number) return false;
+      digits.clear();
+    }
+    return true;
+  });
+  return out;
+}
+
 }  // namespace
+
+std::optional<LaneName> find_place_word(const std::vector<std::string>& w) {
+  static const std::vector<std::string_view> kAt{"at", "by", "near", "beside", "into", "in", "on", "to", "from"};
+  static const std::vector<std::string_view> kFree{"free", "empty", "open", "vacant", "available", "spare"};
+  // Words of places every map has, or that other readers take ("at the front of the queue").
+  static const std::vector<std::string_view> kNotAPlace{
+      "front", "back", "end", "start", "beginning", "side", "sides", "middle", "top", "bottom", "corner", "junction",
+      "crossing", "intersection", "crossroads", "lights", "light", "signal", "signals", "curb", "roundabout", "road",
+      "street", "lane", "lanes", "way", "rear", "edge", "queue", "line", "pavement", "sidewalk", "center", "scene",
+      "camera", "view", "moment", "time", "speed", "distance", "place", "spot", "spots", "space", "spaces", "bay",
+      "bays", "bend", "curve", "hill", "lot", "park", "area", "shoulder", "median", "verge", "row", "ramp", "exit",
+      "entrance", "entry", "gap", "same", "traffic", "world", "picture", "frame", "ground", "car", "cars"};
+  const auto in = [](const std::vector<std::string_view>& list, const std::string& x) {
+    return std::find(list.begin(), list.end(), x) != list.end();
+  };
+  const auto numbered = [&](size_t k) {  // "pump 2", "bay three"
+    size_t used = 0;
+    const auto n = text::number_at(w, k + 1, &used);
+    return n && used == 1 && *n >= 1 && *n < 100 && *n == std::floor(*n) ? std::optional<int>(int(*n)) : std::nullopt;
+  };
+  for (size_t i = 0; i + 2 < w.size(); ++i) {
+    if (!in(kAt, w[i]) || (w[i + 1] != "the" && !numbered(i + 1))) continue;
+    size_t k = w[i + 1] == "the" ? i + 2 : i + 1;
+    if (in(kFree, w[k]) && k + 1 < w.size()) ++k;
+    const std::string& noun = w[k];
+    const bool word = noun.size() >= 3 && std::all_of(noun.begin(), noun.end(), [](char c) {
+                        return std::isalpha(static_cast<unsigned char>(c));
+                      });
+    if (!word || says_where(noun) || in(kNotAPlace, noun) || !lexicon::find_types({noun}).empty()) continue;
+    std::string use = "place:" + noun;
+    size_t end = k + 1;
+    if (const auto n = numbered(k)) {
+      use += "#" + std::to_string(*n);
+      end = k + 2;
+    }
+    return LaneName{use, i + 1, end};
+  }
+  return std::nullopt;
+}
 
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use) {
   const bool turn = use.starts_with("turn");
@@ -190,6 +289,14 @@ std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use
         if (map.lanes()[i].for_stopping()) out.push_back(int(i));
   }
   if (out.empty() && use == "car_park") out = car_park_by_shape(map);
+  if (use == "fuel_station") {  // and the bays beside its lanes (a tanker's, a car wash's)
+    const std::vector<int> named = out;
+    for (size_t i = 0; i < map.lanes().size(); ++i)
+      if (map.lanes()[i].for_stopping() && std::find(out.begin(), out.end(), int(i)) == out.end() &&
+          std::any_of(named.begin(), named.end(), [&](int l) { return runs_beside(map, l, int(i)); }))
+        out.push_back(int(i));
+  }
+  if (use.starts_with("place:")) return lanes_of_place(map, use.substr(6));
   // A roundabout the ids do not name: a lane whose centreline closes on itself.
   if (out.empty() && use == "roundabout")
     for (size_t i = 0; i < map.lanes().size(); ++i)
@@ -215,8 +322,6 @@ bool of_the_road_at(const scene::LaneMap& map, int i, const Eigen::Vector2d& p, 
          std::abs(std::cos(pos.tangent_yaw - yaw)) > 0.9;
 }
 
-}  // namespace
-
 std::vector<int> lanes_the_ego_turns_into(const scene::Scene& scene) {
   if (scene.frames.size() < 2 || scene.lanes.empty()) return {};
   const auto& last = scene.frames.back().ego_to_world;
@@ -232,8 +337,39 @@ std::vector<int> lanes_the_ego_turns_into(const scene::Scene& scene) {
   return out;
 }
 
+// Driving lanes closed by works: those holding two or more cones or barriers, or a construction
+// vehicle, at the clip's start (each counted on the driving lane whose centre it is nearest).
+std::vector<int> lanes_closed_by_works(const scene::Scene& scene) {
+  const auto& lanes = scene.lanes.lanes();
+  std::vector<int> weight(lanes.size(), 0);
+  for (const auto& o : scene.objects) {
+    const bool marker =
+        o.has_category_prefix("movable_object.trafficcone") || o.has_category_prefix("movable_object.barrier");
+    if ((!marker && !o.has_category_prefix("vehicle.construction")) || o.track.empty()) continue;
+    const Eigen::Vector2d p = o.track.front().center.head<2>();
+    int best = -1;
+    double best_lateral = 0;
+    for (size_t i = 0; i < lanes.size(); ++i) {
+      if (lanes[i].type != "driving") continue;
+      const auto pos = scene.lanes.project(int(i), p);
+      const double lateral = std::abs(pos.lateral);
+      if (pos.s <= 0 || pos.s >= lanes[i].length() || lateral >= lanes[i].width / 2) continue;
+      if (best < 0 || lateral < best_lateral) best = int(i), best_lateral = lateral;
+    }
+    if (best >= 0) weight[size_t(best)] += marker ? 1 : 2;
+  }
+  std::vector<int> out;
+  for (size_t i = 0; i < lanes.size(); ++i)
+    if (weight[i] >= 2) out.push_back(int(i));
+  return out;
+}
+
+}  // namespace
+
 std::vector<int> lanes_for_use(const scene::Scene& scene, const std::string& use) {
-  return use == "ego_turn" ? lanes_the_ego_turns_into(scene) : lanes_for_use(scene.lanes, use);
+  if (use == "ego_turn") return lanes_the_ego_turns_into(scene);
+  if (use == "closed") return lanes_closed_by_works(scene);
+  return lanes_for_use(scene.lanes, use);
 }
 
 }  // namespace chatsim::agents::language

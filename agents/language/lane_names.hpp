@@ -13,6 +13,9 @@ namespace chatsim::agents::language {
 // A lane's use as the agents pass it on: ego_turn ("the street we turn into": the road the ego's
 // path takes after its turn), bus, turn, turn_left, turn_right, cycle, tram, taxi, hov,
 // roundabout ("on the roundabout": its ring), car_park ("in the car park": the lanes of that area),
+// closed ("the coned-off lane": a driving lane with cones, barriers or a construction vehicle in it),
+// fuel_station ("at the gas station": its lanes and the bays beside them), place:<word>[#n]
+// (find_place_word),
 // or a word of the map's own ("service" for "the service road", "farm" for "the farm track").
 struct LaneName {
   std::string use;
@@ -27,6 +30,11 @@ bool is_known_use(const std::string& use);
 // The first lane named by its use in w, if any.
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w);
 
+// "at the pumps", "at pump 2", "by the free charger": a place said by a word the map's lane ids
+// may have (use "place:pump", "place:pump#2"). Weaker than a lane name: a map without such a lane
+// says nothing, so callers keep the words for their other readings.
+std::optional<LaneName> find_place_word(const std::vector<std::string>& w);
+
 // "past the junction", "before the crossing", "near the lights": where along the road, by the
 // first junction ahead (after, before or near), not the cross street's lane; the words are blanked.
 std::optional<std::string> blank_junction_place(std::vector<std::string>& w);
@@ -35,8 +43,7 @@ std::optional<std::string> blank_junction_place(std::vector<std::string>& w);
 // id, the lanes that open off another (on the side said). None: the map does not name it.
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use);
 // As above, and ego_turn: the lanes of the road the ego drives on at the clip's end, when its
-// recorded path has turned by more than 45 degrees by then (none when it has not).
+// recorded path has turned by more than 45 degrees by then (none when it has not); and closed.
 std::vector<int> lanes_for_use(const scene::Scene& scene, const std::string& use);
-std::vector<int> lanes_the_ego_turns_into(const scene::Scene& scene);
 
 }  // namespace chatsim::agents::language

@@ -361,7 +361,8 @@ const std::vector<std::string>& place_of_removed_phrases() {
 }
 
 const std::vector<Relation>& relation_phrases() {
-  static const std::vector<Relation> kRelations{
+  static const std::vector<Relation> kRelations = [] {
+    std::vector<Relation> out{
       {"in front of", "front"}, {"to the front of", "front"}, {"at the front of", "front"}, {"ahead of", "front"},
       {"just ahead of", "front"}, {"past", "beyond"}, {"beyond", "beyond"},
       {"further on than", "beyond"},
@@ -374,6 +375,9 @@ const std::vector<Relation>& relation_phrases() {
       {"alongside", "left"}, {"level with", "left"}, {"abreast of", "left"},
       {"on the other side of the road from", "opposite"}, {"across the road from", "opposite"},
       {"across the street from", "opposite"}, {"across from", "opposite"}, {"opposite", "opposite"}};
+    for (auto& r : out) r.words = text::words(r.phrase);
+    return out;
+  }();
   return kRelations;
 }
 
@@ -392,22 +396,20 @@ std::optional<std::string> unsupported_noun(const std::vector<std::string>& w) {
   // "a horse box trailer", "a boat trailer", "the school bus": a noun right before a vehicle noun
   // says what kind of vehicle, not what is added.
   static const auto kNounWords = [] {
-    std::vector<std::vector<std::string>> out;
-    for (const char* n : kNouns) out.push_back(text::words(n));
+    std::vector<std::pair<std::string, std::vector<std::string>>> out;
+    for (const char* n : kNouns) out.emplace_back(n, text::words(n));
     return out;
   }();
   const auto vehicles = find_types(w);
   for (size_t i = 0; i < w.size(); ++i)
-    for (size_t k = 0; k < kNounWords.size(); ++k) {
-      const auto& nw = kNounWords[k];
-      const char* n = kNouns[k];
+    for (const auto& [n, nw] : kNounWords) {
       if (!words_at(w, i, nw)) continue;
       const size_t end = i + nw.size();
       if (std::none_of(vehicles.begin(), vehicles.end(), [&](const TypeMention& t) {
             const bool inside = t.begin <= i && i < t.end;  // "a school bus" is a vehicle
             return (inside || (t.begin >= end && t.begin <= end + 1)) && t.type.type != "object" && !t.type.living();
           }))
-        return std::string(n);
+        return n;
     }
   return std::nullopt;
 }

@@ -56,12 +56,14 @@ const std::vector<std::string>& place_of_removed_phrases();
 // Words that place a vehicle relative to another ("behind the bus", "tailgating the orange car",
 // "opposite the school bus"): the region (front, back, left, right; beyond: past it as seen from
 // the ego; opposite: level with it across the road) and whether it follows that vehicle. What
-// follows one names the other vehicle, not the one added. Tried in this order: a phrase before
-// any phrase it contains ("chasing after" before "after").
+// follows one names the other vehicle, not the one added. Tried in this order, the first found
+// winning: mostly a phrase before the shorter ones it contains ("chasing after" before "after");
+// "ahead of" before "just ahead of", so that "just" stays for the placement words ("just ahead").
 struct Relation {
   std::string phrase;
   std::string region;
   bool chase = false;
+  std::vector<std::string> words = {};  // the phrase as text::words reads it
 };
 const std::vector<Relation>& relation_phrases();
 // Words that name something we cannot select or add (helicopter, plane, ...).

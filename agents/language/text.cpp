@@ -76,6 +76,21 @@ std::string fold_characters(std::string_view s) {
   return out;
 }
 
+// "2nd", "3rd" (split as "2" "nd" above) -> "second", "third": one spelling for every reader.
+void ordinals_to_words(std::vector<std::string>& w) {
+  static const char* kOrdinals[] = {"first",  "second", "third", "fourth", "fifth",
+                                    "sixth",  "seventh", "eighth", "ninth", "tenth"};
+  for (size_t i = 0; i + 1 < w.size(); ++i) {
+    const auto& suffix = w[i + 1];
+    if (suffix != "st" && suffix != "nd" && suffix != "rd" && suffix != "th") continue;
+    int n = 0;
+    const auto [ptr, ec] = std::from_chars(w[i].data(), w[i].data() + w[i].size(), n);
+    if (ec != std::errc() || ptr != w[i].data() + w[i].size() || n < 1 || n > 10) continue;
+    w[i] = kOrdinals[n - 1];
+    w.erase(w.begin() + long(i) + 1);
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> words(std::string_view s_in) {
@@ -124,6 +139,7 @@ std::vector<std::string> words(std::string_view s_in) {
     }
   }
   flush();
+  ordinals_to_words(out);
   // "m/s" stays one word; "km/h" too.
   return out;
 }
@@ -138,7 +154,10 @@ std::string join(const std::vector<std::string>& w, size_t begin, size_t end) {
 }
 
 size_t find_phrase(const std::vector<std::string>& w, std::string_view phrase, size_t from) {
-  const auto p = words(phrase);
+  return find_words(w, words(phrase), from);
+}
+
+size_t find_words(const std::vector<std::string>& w, const std::vector<std::string>& p, size_t from) {
   if (p.empty()) return std::string::npos;
   for (size_t i = from; i + p.size() <= w.size(); ++i) {
     bool match = true;
@@ -220,6 +239,30 @@ std::optional<double> number_at(const std::vector<std::string>& w, size_t i, siz
 }
 
 std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initializer_list<std::string_view> units) {
+  return quantities(w, std::vector<std::string_view>(units));
+}
+
+const std::vector<std::string_view>& length_units() {
+  static const std::vector<std::string_view> kUnits{"meters", "meter", "m", "feet", "foot", "ft", "yards", "yard",
+                                                    "km", "kilometers", "kilometer", "miles", "mile", "centimeters",
+                                                    "cm", "car lengths", "car length", "bus lengths",
+                                                    "bus length", "lane widths", "lane width"};
+  return kUnits;
+}
+
+std::optional<double> meters_per(std::string_view unit) {
+  static const std::map<std::string_view, double> kMeters{
+      {"meters", 1.0},     {"meter", 1.0},         {"m", 1.0},          {"feet", 0.3048},  {"foot", 0.3048},
+      {"ft", 0.3048},      {"yards", 0.9144},      {"yard", 0.9144},    {"km", 1000.0},    {"kilometers", 1000.0},
+      {"kilometer", 1000.0}, {"miles", 1609.344}, {"mile", 1609.344}, {"centimeters", 0.01}, {"cm", 0.01},
+      // "two car lengths ahead": a typical car (4.5 m), bus (12 m) and lane (3.5 m).
+      {"car lengths", 4.5}, {"car length", 4.5}, {"bus lengths", 12.0}, {"bus length", 12.0},
+      {"lane widths", 3.5}, {"lane width", 3.5}};
+  const auto it = kMeters.find(unit);
+  return it == kMeters.end() ? std::nullopt : std::optional<double>(it->second);
+}
+
+std::vector<Quantity> quantities(const std::vector<std::string>& w, const std::vector<std::string_view>& units) {
   std::vector<Quantity> out;
   for (size_t i = 0; i < w.size(); ++i) {
     size_t used = 0;
@@ -238,7 +281,7 @@ std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initial
           value += 0.5;
           end += 3;
         }
-        out.push_back({value, i, end});
+        out.push_back({value, i, end, std::string(u)});
         i = end - 1;
         break;
       }

@@ -16,6 +16,8 @@ std::string join(const std::vector<std::string>& words, size_t begin = 0, size_t
 
 // Index of the first occurrence of a phrase ("turn left") at or after `from`, or npos.
 size_t find_phrase(const std::vector<std::string>& w, std::string_view phrase, size_t from = 0);
+// As find_phrase, for a phrase already split into words (a table read once, searched often).
+size_t find_words(const std::vector<std::string>& w, const std::vector<std::string>& phrase, size_t from = 0);
 bool has_phrase(const std::vector<std::string>& w, std::string_view phrase);
 bool has_any(const std::vector<std::string>& w, std::initializer_list<std::string_view> phrases);
 // Index of the first phrase found (by position in the text), or npos.
@@ -32,8 +34,15 @@ struct Quantity {
   double value = 0;
   size_t begin = 0;   // first word of the number
   size_t end = 0;     // one past the unit
+  std::string unit;   // as listed ("m", "car lengths")
 };
 std::vector<Quantity> quantities(const std::vector<std::string>& w, std::initializer_list<std::string_view> units);
+std::vector<Quantity> quantities(const std::vector<std::string>& w, const std::vector<std::string_view>& units);
+
+// The units of length a command may say a distance in, and metres per unit (nullopt for a word
+// that is none of them).
+const std::vector<std::string_view>& length_units();
+std::optional<double> meters_per(std::string_view unit);
 
 bool is_number_word(const std::string& w);
 

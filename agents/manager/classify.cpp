@@ -83,11 +83,11 @@ bool classify_whole(const Words& c, Instruction& in) {
     in.target = in.text;
     return true;
   }
-  // "remove both cars queuing to turn left", "delete the cars stuck in traffic": what the vehicles
-  // to remove are doing, not a scene to build.
-  const bool removes_vehicles = (has_any({first}, {"remove", "delete", "erase", "eliminate", "wipe", "ditch"}) ||
-                                 text::find_phrase(c, "get rid of") == 0) && mentions_vehicle(c);
-  if (removes_vehicles) return false;
+  // "remove both cars queuing to turn left", "remove everything in the closed lane", "remove the
+  // roadworks sign": a removal builds no scene (what follows says which vehicles, or names a thing).
+  const bool removes = has_any({first}, {"remove", "delete", "erase", "eliminate", "wipe", "ditch"}) ||
+                       text::find_phrase(c, "get rid of") == 0;
+  if (removes) return false;
   if (has_any(c, {"traffic jam", "jam", "jams", "standstill", "stop and go", "congested", "congestion", "gridlock",
                   "stuck in traffic", "bumper to bumper", "jammed", "queue of",
                   "tailback", "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
@@ -101,6 +101,14 @@ bool classify_whole(const Words& c, Instruction& in) {
   if (dense_traffic || has_any(c, {"busy road", "busy street", "heavy traffic", "rush hour", "lots of traffic",
                                    "crowded road", "dense traffic", "busy", "more traffic", "lot of traffic"})) {
     in.kind = "busy_road";
+    // "a busy Saturday at the gas station", "the car park is busy": a place to stop at, full of
+    // parked cars (not "busy with traffic": cars driving there).
+    const auto area = language::find_lane_name(c);
+    if (area && (area->use == "car_park" || area->use == "lay_by" || area->use == "fuel_station") &&
+        !has_any(c, {"traffic", "driving", "moving", "cars coming", "coming and going"})) {
+      in.kind = "add";
+      in.text = "add a few cars parked at the " + text::join(c, area->begin, area->end);
+    }
     return true;
   }
   // "no parked cars", "nothing parked anywhere": what should not be there is to be removed.
@@ -166,8 +174,12 @@ bool classify_whole(const Words& c, Instruction& in) {
     in.kind = "road_block";
     return true;
   }
-  if (has_any(c, {"construction zone", "construction site", "road work", "road works", "roadwork", "roadworks", "work zone",
-                  "construction area", "lane closure", "road closure", "close the lane", "closed lane"})) {
+  // "add a police car in the closed lane", "the van past the roadworks": works already there
+  // ("the ...") are a place, not a zone to build.
+  const size_t works = text::find_any(c, {"construction zone", "construction site", "road work", "road works",
+                                          "roadwork", "roadworks", "work zone", "construction area", "lane closure",
+                                          "road closure", "close the lane", "closed lane"});
+  if (works != std::string::npos && (works == 0 || c[works - 1] != "the")) {
     in.kind = "construction_zone";
     return true;
   }
@@ -416,14 +428,18 @@ Instruction classify(const Words& c_in) {
                           has_any(c, {"look behind", "look back", "look backward", "look backwards", "turn around",
                                       "face backward", "face backwards", "look the other way", "face the other way",
                                       "look left", "look right", "look to the left", "look to the right", "face left",
-                                      "face right", "look from", "looking from", "seen from", "see from", "see it from",
-                                      "watch from"});
+                                      "face right"});
+  // "I want to see it from the other lane": "it" is the scene, not an added vehicle.
+  const bool seen_from = !vehicle && has_any(c, {"look from", "looking from", "seen from", "see from", "see it from",
+                                                 "see this from", "see that from", "see everything from",
+                                                 "watch from", "watch it from", "view it from", "show it from"});
   // "drive a lot faster", "crawl along slowly": an order to drive, with no vehicle to drive, is the ego's.
   const bool ego_drives = !vehicle && !added_ref && c.size() > 1 &&
                           has_any({c.front()}, {"drive", "go", "speed", "crawl", "cruise", "roll"}) &&
                           has_any(c, {"faster", "slower", "slowly", "quickly", "fast", "slow", "speed up", "slow down"});
   const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
-                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom || ego_drives;
+                          has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom || seen_from ||
+                          ego_drives;
   const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "get", "set", "put", "place", "position",
                                        "push", "paint", "repaint", "respray", "recolor", "color", "turn",
                                        "move", "speed", "slow", "swap", "replace", "switch", "should", "park", "stop",

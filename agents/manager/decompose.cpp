@@ -284,27 +284,6 @@ void words_with_commas(const std::string& sentence, Words& w, std::vector<bool>&
   }
 }
 
-// "Simulate a breakdown: a van stopped in my lane, cones behind it": a title the detail after the
-// colon carries out; it stays only when it is something to do by itself.
-std::vector<Instruction> titled(const std::string& sentence, size_t colon) {
-  auto title = decompose(sentence.substr(0, colon));
-  auto body = decompose(sentence.substr(colon + 1));
-  // "Make it look like school's out: ..." describes the scene the detail builds.
-  const bool scene_title = text::has_any(text::words(sentence.substr(0, colon)),
-                                         {"look like", "looks like", "as if", "as though", "feel like"});
-  const auto unclear = [](const Instruction& i) { return i.kind == "unclear"; };
-  // "Busy morning: a few more cars parked on the left": a scene named by a mood, which the detail
-  // makes (not a second scene on top of it).
-  const bool mood_title = std::all_of(title.begin(), title.end(), [](const Instruction& i) {
-    return i.kind == "busy_road" && !mentions_vehicle(text::words(i.text));
-  });
-  if ((scene_title || mood_title || std::all_of(title.begin(), title.end(), unclear)) &&
-      !std::all_of(body.begin(), body.end(), unclear))
-    title.clear();
-  title.insert(title.end(), body.begin(), body.end());
-  return title;
-}
-
 }  // namespace
 
 namespace {
@@ -366,17 +345,21 @@ std::string negation_as_exception(const std::string& sentence) {
 
 // "w/ its lights on, put a police car behind the bus": a leading "with ..." phrase says how the
 // next clause's vehicle is; it goes to the end of that clause.
-std::vector<Words> with_phrases_attached(std::vector<Words> parts) {
-  for (size_t k = 0; k + 1 < parts.size(); ++k) {
-    const Words& p = parts[k];
-    if (p.empty() || (p.front() != "with" && p.front() != "without") ||
-        std::any_of(p.begin(), p.end(), [](const std::string& x) { return starts_instruction(x); }))
+std::vector<Words> with_phrases_attached(const std::vector<Words>& parts) {
+  std::vector<Words> out;
+  Words pending;  // "with ..." phrases waiting for the clause they describe
+  for (const auto& p : parts) {
+    const bool with_phrase = !p.empty() && (p.front() == "with" || p.front() == "without") &&
+                             std::none_of(p.begin(), p.end(), [](const std::string& x) { return starts_instruction(x); });
+    if (with_phrase && &p != &parts.back()) {
+      pending.insert(pending.end(), p.begin(), p.end());
       continue;
-    parts[k + 1].insert(parts[k + 1].end(), p.begin(), p.end());
-    parts.erase(parts.begin() + long(k));
-    --k;
+    }
+    out.push_back(p);
+    out.back().insert(out.back().end(), pending.begin(), pending.end());
+    pending.clear();
   }
-  return parts;
+  return out;
 }
 
 // "the white van has broken down and a tow truck is parked behind it": a clause saying how a

@@ -55,8 +55,8 @@ bool Manager::same_again(const Conversation& c, const std::string& command, Inst
   const size_t colon = said.find(": ");
   if (colon == std::string::npos) return false;
   const std::string kind = said.substr(0, colon);
-  std::string text = said.substr(colon + 2);
-  size_t object = text::find_any(w, {"for", "to", "with"});
+  std::string again = said.substr(colon + 2);
+  const size_t object = text::find_any(w, {"for", "to", "with"});
   const size_t but = text::find_phrase(w, "but");
   if (kind == "delete" && object != std::string::npos && object > at) {
     in = Instruction{"delete", "remove " + text::join(w, object + 1), "", 1};
@@ -67,7 +67,7 @@ bool Manager::same_again(const Conversation& c, const std::string& command, Inst
   if (but != std::string::npos) {
     const std::vector<std::string> changes(w.begin() + long(but) + 1, w.end());
     const auto colors = lexicon::find_colors(changes);
-    std::vector<std::string> words = text::words(text);
+    std::vector<std::string> words = text::words(again);
     if (!colors.empty()) {
       std::erase_if(words, [](const std::string& x) { return lexicon::is_color_word(x); });
       const auto article = std::find_if(words.begin(), words.end(), [](const std::string& x) {
@@ -75,9 +75,9 @@ bool Manager::same_again(const Conversation& c, const std::string& command, Inst
       });
       if (article != words.end()) words.insert(article + 1, colors.front().name);
     }
-    text = text::join(words);
+    again = text::join(words);
   }
-  in = Instruction{"add", text, "", 1};
+  in = Instruction{"add", again, "", 1};
   return true;
 }
 

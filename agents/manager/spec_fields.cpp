@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "agents/language/text.hpp"
+#include "agents/manager/classify.hpp"
 
 namespace chatsim::agents::manager {
 namespace {
@@ -148,6 +149,34 @@ std::optional<std::string> spec_as_sentence(const std::string& command) {
   if (heading.empty() && text::has_any(text::words(title), {"lead", "leading", "car following", "follow"}))
     say("going the same way as me");
   return out;
+}
+
+// "Simulate a breakdown: a van stopped in my lane, cones behind it": a title the detail after the
+// colon carries out; it stays only when it is something to do by itself.
+std::vector<Instruction> titled(const std::string& sentence, size_t colon) {
+  auto title = decompose(sentence.substr(0, colon));
+  // "clear the works area: the digger, the dumper and the trailer": a removal whose detail only
+  // names what goes.
+  const auto head = text::words(sentence.substr(0, colon));
+  const auto named = text::words(sentence.substr(colon + 1));
+  const bool removal = title.size() == 1 && (title[0].kind == "delete" ||
+                                             (!head.empty() && text::has_any({head[0]}, {"clear", "empty", "remove"})));
+  if (removal && !named.empty() && text::has_any({named[0]}, {"the", "both", "those", "these", "all", "every", "any"}))
+    return decompose("remove " + sentence.substr(colon + 1));
+  auto body = decompose(sentence.substr(colon + 1));
+  // "Make it look like school's out: ..." describes the scene the detail builds.
+  const bool scene_title = text::has_any(head, {"look like", "looks like", "as if", "as though", "feel like"});
+  const auto unclear = [](const Instruction& i) { return i.kind == "unclear"; };
+  // "Busy morning: a few more cars parked on the left": a scene named by a mood, which the detail
+  // makes (not a second scene on top of it).
+  const bool mood_title = std::all_of(title.begin(), title.end(), [](const Instruction& i) {
+    return i.kind == "busy_road" && !detail::mentions_vehicle(text::words(i.text));
+  });
+  if ((scene_title || mood_title || std::all_of(title.begin(), title.end(), unclear)) &&
+      !std::all_of(body.begin(), body.end(), unclear))
+    title.clear();
+  title.insert(title.end(), body.begin(), body.end());
+  return title;
 }
 
 }  // namespace chatsim::agents::manager

@@ -9,13 +9,15 @@ void MotionIntent::merge(const MotionIntent& o) {
     placement = o.placement;
     relative.reset();
     if (!o.distance_m) distance_m.reset();
+    if (!o.headway_s) headway_s.reset();
     if (!o.lane) lane.reset();
   }
   if (o.relative) {
     relative = o.relative;
     placement.reset();
   }
-  if (o.distance_m) distance_m = o.distance_m;
+  if (o.distance_m) distance_m = o.distance_m, headway_s.reset();
+  if (o.headway_s) headway_s = o.headway_s, distance_m.reset();
   if (o.distance_word) distance_word = o.distance_word;
   if (o.lane) lane = o.lane;
   if (o.action) action = o.action;
@@ -59,6 +61,7 @@ nlohmann::json to_json(const MotionIntent& m) {
   nlohmann::json j = nlohmann::json::object();
   util::put_optional(j, "placement", m.placement);
   util::put_optional(j, "distance_m", m.distance_m);
+  util::put_optional(j, "headway_s", m.headway_s);
   util::put_optional(j, "distance_word", m.distance_word);
   util::put_optional(j, "lane", m.lane);
   util::put_optional(j, "lane_edge", m.lane_edge);
@@ -84,6 +87,7 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   if (!j.is_object()) return m;
   util::get_optional(j, "placement", m.placement);
   util::get_optional(j, "distance_m", m.distance_m);
+  util::get_optional(j, "headway_s", m.headway_s);
   util::get_optional(j, "distance_word", m.distance_word);
   util::get_optional(j, "lane", m.lane);
   util::get_optional(j, "lane_edge", m.lane_edge);

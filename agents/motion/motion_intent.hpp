@@ -18,6 +18,7 @@ struct RelativePlacement {
 struct MotionIntent {
   std::optional<std::string> placement;   // front, left_front, right_front, left, right, back
   std::optional<double> distance_m;
+  std::optional<double> headway_s;          // "3 seconds ahead": a distance in time (the planner sets the metres)
   std::optional<double> distance_change_m;  // "10 m further away": added to the distance it has (revisions)
   std::optional<double> distance_factor;    // "twice as far away": times the distance it has (revisions)
   std::optional<std::string> distance_word;  // close, far, end ("at the far end of the street")

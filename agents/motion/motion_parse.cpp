@@ -23,8 +23,8 @@ bool is_self(const std::string& w) { return w == "me" || w == "us" || w == "my" 
 // "in front of the added car" -> {"the added car", front}; not "in front of me".
 std::optional<RelativePlacement> find_relative(Words& w) {
   for (const auto& p : lexicon::relation_phrases()) {
-    for (size_t at = find_phrase(w, p.phrase); at != std::string::npos; at = find_phrase(w, p.phrase, at + 1)) {
-      const size_t after = at + text::words(p.phrase).size();
+    for (size_t at = text::find_words(w, p.words); at != std::string::npos; at = text::find_words(w, p.words, at + 1)) {
+      const size_t after = at + p.words.size();
       if (after >= w.size() || is_self(w[after])) continue;
       // The reference runs to the next preposition or verb-ish word.
       size_t end = after;
@@ -125,12 +125,22 @@ std::optional<std::string> find_placement(const Words& w, bool has_ahead_distanc
 }
 
 
+// "far" as a distance, not "the far side", "the far lane", "far left" (a side or lane said).
+bool says_far(const Words& w) {
+  for (size_t i = 0; i < w.size(); ++i)
+    if (w[i] == "far" && (i + 1 == w.size() || !has_any({w[i + 1]}, {"side", "lane", "lanes", "curb", "pavement",
+                                                                       "sidewalk", "corner", "edge", "left", "right",
+                                                                       "bank"})))
+      return true;
+  return false;
+}
+
 std::optional<std::string> find_action(const Words& w) {
   // "takes the second exit (off the roundabout)": which exit round the ring, not a turn said.
-  static const char* kOrdinals[] = {"first", "second", "third", "fourth", "1st", "2nd", "3rd", "4th"};
+  static const char* kOrdinals[] = {"first", "second", "third", "fourth"};
   for (size_t i = 0; i + 1 < w.size(); ++i)
-    for (int k = 0; k < 8; ++k)
-      if (w[i] == kOrdinals[k] && w[i + 1] == "exit") return "exit_" + std::to_string(k % 4 + 1);
+    for (int k = 0; k < 4; ++k)
+      if (w[i] == kOrdinals[k] && w[i + 1] == "exit") return "exit_" + std::to_string(k + 1);
   // "waiting at the junction to turn right", "about to pull out": what it will do after the
   // clip; now it stands (unless it is said to go on, "waits, then turns").
   const bool about_to_start = has_any(w, {"about to", "ready to", "preparing to"}) &&
@@ -225,17 +235,10 @@ bool find_distance(const Words& w, MotionIntent& m) {
       m.distance_factor = factor;
       return false;
     }
-  for (const auto& q : text::quantities(w, {"meters", "meter", "m", "feet", "foot", "ft", "yards", "yard", "km",
-                                            "kilometers", "kilometer", "miles", "mile"})) {
+  for (const auto& q : text::quantities(w, text::length_units())) {
     // "50 kilometers per hour" is a speed (find_speed), not a distance.
     if (q.end < w.size() && (w[q.end] == "per" || w[q.end] == "an" || w[q.end] == "a")) continue;
-    const std::string unit = w[q.end - 1];
-    const double f = (unit == "feet" || unit == "foot" || unit == "ft")                ? 0.3048
-                     : (unit == "yards" || unit == "yard")                            ? 0.9144
-                     : (unit == "km" || unit == "kilometers" || unit == "kilometer") ? 1000.0
-                     : (unit == "miles" || unit == "mile")                            ? 1609.344
-                                                                                      : 1.0;
-    const double d = q.value * f;
+    const double d = q.value * text::meters_per(q.unit).value_or(1.0);
     // "10 m further away", "5 m closer": a change of the distance it has, not a new one.
     if (q.end < w.size() && (w[q.end] == "further" || w[q.end] == "farther" || w[q.end] == "closer" || w[q.end] == "nearer")) {
       m.distance_change_m = (w[q.end] == "closer" || w[q.end] == "nearer") ? -d : d;
@@ -251,6 +254,14 @@ bool find_distance(const Words& w, MotionIntent& m) {
       m.distance_m = d;
     return q.end < w.size() && (w[q.end] == "ahead" || w[q.end] == "in" || w[q.end] == "forward" ||
                                 w[q.end] == "away" || w[q.end] == "down");
+  }
+  // "3 seconds ahead of me", "two seconds behind the bus", "a 2 s gap": a distance in time; not
+  // "for 3 seconds" or "after 2 seconds" (when, or how long).
+  for (const auto& q : text::quantities(w, {"seconds", "second", "secs", "sec", "s"})) {
+    if (q.end >= w.size() || !has_any({w[q.end]}, {"ahead", "behind", "in", "back", "gap", "headway", "away"})) continue;
+    if (q.begin > 0 && has_any({w[q.begin - 1]}, {"for", "after", "within", "in", "wait", "waits", "every"})) continue;
+    if (q.value > 0 && q.value <= 60) m.headway_s = q.value;
+    return w[q.end] == "ahead" || w[q.end] == "in" || w[q.end] == "away";
   }
   return false;
 }
@@ -341,6 +352,8 @@ MotionIntent parse_motion(const std::string& instruction) {
   if (const auto name = language::find_lane_name(w)) {
     m.lane_use = name->use;
     for (size_t k = name->begin; k < name->end; ++k) w[k] = "_";
+  } else if (const auto place = language::find_place_word(w)) {
+    m.lane_use = place->use;  // "at pump 2": its words stay for the other readings
   }
   const auto change_to = lane_change_to(w);  // first: "change into the kerb lane" names a target, not a start
   m.lane_edge = find_lane_edge(w);
@@ -369,8 +382,14 @@ MotionIntent parse_motion(const std::string& instruction) {
   // "following me", "on my tail": behind the ego, going its way.
   if (!m.relative && (!m.placement || m.placement == "front") &&
       has_any(w, {"following me", "following us", "follows me", "follows us", "follow me", "tailing me", "tailing us",
-                  "tailgating me", "tailgating us", "on my tail", "on our tail", "chasing me", "chasing us"}))
+                  "tailgating me", "tailgating us", "on my tail", "on our tail", "chasing me", "chasing us",
+                  "chase me", "chase us", "chases me", "chases us", "pursue me", "pursue us", "pursuing me",
+                  "pursuing us", "follow us"})) {
     m.placement = "back";
+    if (!m.direction) m.direction = "toward";  // the ego's way: from behind, toward where the ego starts
+    // A chase is fast: it closes on the ego (car following keeps it behind).
+    if (has_any(w, {"chase", "chases", "chasing", "pursue", "pursuing"}) && !m.speed && !m.speed_mps) m.speed = "fast";
+  }
   if (m.distance_factor) {  // "twice as far": how far is said by the factor
   } else if (has_any(w, {"close front", "close to me", "near me", "nearby", "right in front", "just ahead",
                          "close behind", "close", "near"}))
@@ -378,7 +397,7 @@ MotionIntent parse_motion(const std::string& instruction) {
   else if (has_any(w, {"far end", "other end", "end of the road", "end of the street", "end of the aisle",
                        "end of the lane", "end of the car park", "end of the block"}))
     m.distance_word = "end";  // as far up the road as it is seen
-  else if (has_any(w, {"far ahead", "far away", "in the distance", "far", "distant"}))
+  else if (has_any(w, {"far ahead", "far away", "in the distance", "distant"}) || says_far(w))
     m.distance_word = "far";
   m.action = change_to ? change_to : find_action(w);
   // "turning into the side street on the left": the street's side is the turn's.

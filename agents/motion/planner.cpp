@@ -102,6 +102,12 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
   }
   if (times_.back() > 0) ego_speed_ /= times_.back();
   if (req.ego_speed_mps) ego_speed_ = *req.ego_speed_mps;
+  // "3 seconds ahead": at the speed of the vehicle it is measured from (the anchor, else the ego;
+  // standing, the speed a car drives at, 8 m/s).
+  if (m_.headway_s && !m_.distance_m) {
+    const double from = m_.relative && req.anchor ? req.anchor->speed_mps : ego_speed_;
+    m_.distance_m = *m_.headway_s * (from > 0.5 ? from : 8.0);
+  }
   movable_ = req.type != "cone" && req.type != "barrier";
   if (!movable_) {
     m_.action = "static";
@@ -141,6 +147,16 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
       ego_lane_dir_ = std::cos(wrap(l.tangent_yaw - ego_.yaw)) >= 0 ? 1 : -1;
       break;
     }
+  // "parked on the far side": beyond the nearest lane of oncoming traffic, on its side.
+  if (m_.lane == "oncoming") {
+    double nearest = 12;
+    for (size_t li = 0; li < scene.lanes.lanes().size(); ++li) {
+      const auto pos = scene.lanes.project(int(li), ego_.p);
+      const double lat = lateral_of(int(li));
+      if (scene.lanes.lanes()[li].type == "driving" && !same_way_as_ego(int(li), pos.s) && std::abs(lat) < nearest)
+        nearest = std::abs(lat), oncoming_side_ = lat > 0 ? 1 : -1;
+    }
+  }
 }
 
 PlanResult Planner::run() {
@@ -322,21 +338,44 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
 }
 
 std::optional<PlanResult> Planner::parked_off_lane() const {
-  if (!m_.relative || m_.relative->region != "at" || !req_.anchor) return std::nullopt;
+  if (!m_.relative || !req_.anchor) return std::nullopt;
+  const std::string& region = m_.relative->region;
+  if (region != "at" && region != "left" && region != "right") return std::nullopt;
   const Anchor& a = *req_.anchor;
   const bool parked = wants_parked(false) || (a.speed_mps < 0.5 && nothing_said_about_motion());
   if (!parked || !scene_.lanes.containing({a.start.x, a.start.y}, 0.5).empty()) return std::nullopt;
+  const auto taken_by = [&](const Pose2& at) -> std::string {
+    for (size_t f = 0; f < times_.size(); ++f)
+      for (const auto& ob : req_.obstacles)
+        if (f < ob.poses.size() && ob.poses[f] && !ob.pedestrian &&
+            boxes_overlap(at, req_.size_lwh, *ob.poses[f], ob.size_lwh, 1.0, kClearanceM))
+          return ob.id + " stands there at t = " + fmt(times_[f]) + " s";
+    return "";
+  };
+  // In its place, or beside it ("a motorbike parked next to the bicycles" on a pavement the map
+  // does not draw): the side said first, then the other, a little further out each time.
+  std::vector<Pose2> places;
+  if (region == "at") {
+    places.push_back({a.start.x, a.start.y, a.start.yaw});
+  } else {
+    const double first = (a.size_lwh.y() + req_.size_lwh.y()) / 2 + 0.4;
+    const Eigen::Vector2d left(-std::sin(a.start.yaw), std::cos(a.start.yaw));
+    for (const double side : {region == "left" ? 1.0 : -1.0, region == "left" ? -1.0 : 1.0})
+      for (double out = first; out < first + 3.0; out += 0.5) {
+        const Eigen::Vector2d p = Eigen::Vector2d(a.start.x, a.start.y) + side * out * left;
+        places.push_back({p.x(), p.y(), a.start.yaw});
+      }
+  }
   PlanResult result;
   result.t_s = times_;
-  const Pose2 at{a.start.x, a.start.y, a.start.yaw};
-  result.trajectory.assign(times_.size(), at);
-  for (size_t f = 0; f < times_.size() && result.reason.empty(); ++f)
-    for (const auto& ob : req_.obstacles)
-      if (f < ob.poses.size() && ob.poses[f] && !ob.pedestrian &&
-          boxes_overlap(at, req_.size_lwh, *ob.poses[f], ob.size_lwh, 1.0, kClearanceM)) {
-        result.reason = "its place is taken: " + ob.id + " stands there at t = " + fmt(times_[f]) + " s";
-        break;
-      }
+  for (const auto& at : places) {
+    result.reason = taken_by(at);
+    if (result.reason.empty()) {
+      result.trajectory.assign(times_.size(), at);
+      break;
+    }
+  }
+  if (!result.reason.empty()) result.reason = "its place is taken: " + result.reason;
   result.ok = result.reason.empty();
   if (!result.ok) result.trajectory.clear();
   result.speed_mps = 0;

@@ -121,7 +121,12 @@ double Planner::said_lane_penalty(int lane, double s, int dir) const {
   if (*m_.lane == "ego") return lane == ego_lane_ ? 0 : 60;
   if (*m_.lane == "parking") return l.for_stopping() ? 0 : 60;
   if (*m_.lane == "ramp") return scene_.lanes.merges(lane) ? 0 : 60;
-  if (*m_.lane == "oncoming") return l.type == "driving" && !same_way_as_ego(lane, s) ? std::abs(lat) * 0.5 : 60;
+  if (*m_.lane == "oncoming") {
+    // Parked "on the other side of the road": a kerb or bay beyond the oncoming traffic.
+    const bool parked = m_.speed == "static" || m_.action == "static";
+    if (parked && l.for_stopping()) return oncoming_side_ * lat > 1.5 ? std::abs(lat) * 0.5 : 60;
+    return l.type == "driving" && !same_way_as_ego(lane, s) ? std::abs(lat) * 0.5 : 60;
+  }
   // "the right lane" where the ego drives in the rightmost lane: that lane (and so for the left).
   if (*m_.lane == "left" || *m_.lane == "right") {
     const int side = *m_.lane == "left" ? 1 : -1;
@@ -398,13 +403,11 @@ std::vector<Candidate> Planner::relative_candidates() const {
     // Ahead of or behind a moving vehicle: a second's headway at its speed (at most 20 m), not
     // bumper to bumper.
     const double headway = a.speed_mps > 0.5 ? std::min(a.speed_mps * 1.0, 20.0) : 0.0;
-    for (double gap = base_gap + headway; gap < base_gap + headway + 45; gap += 0.5) {
+    const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
+                        (a.speed_mps == 0 && nothing_said_about_motion());
+    for (const auto& [gap, cost] : gaps_from_anchor(base_gap, headway)) {
       const double s = s0 + k * dir * gap;
-      if (s < 0 || s > scene_.lanes.lanes()[size_t(lane)].length()) continue;
-      const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
-                          (a.speed_mps == 0 && nothing_said_about_motion());
-      Candidate c{lane, s, dir, parked, gap - base_gap - headway};
-      out.push_back(c);
+      if (s >= 0 && s <= scene_.lanes.lanes()[size_t(lane)].length()) out.push_back({lane, s, dir, parked, cost});
     }
   } else if (std::abs(std::sin(wrap(a.start.yaw - scene_.lanes.tangent_yaw_at(lane, s0)))) > 0.7) {
     beside_in_row(lane, s0, dir, region == "left" ? 1 : -1, out);

@@ -125,6 +125,9 @@ class Planner {
   void beside_in_row(int lane, double s0, int dir, int side, std::vector<Candidate>& out) const;
   void opposite_candidates(std::vector<Candidate>& out) const;
   void beyond_candidates(int lane, double s0, int dir, std::vector<Candidate>& out) const;
+  // Centre-to-centre gaps to try ahead of or behind the anchor, each with its cost: near the
+  // distance said ("20 m ahead of the van"), else as close as a headway allows.
+  std::vector<std::pair<double, double>> gaps_from_anchor(double base_gap, double headway) const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
   Evaluated evaluate_at(const Candidate& c, double speed, double wait_s = 0, int join_side = 0) const;
@@ -177,6 +180,7 @@ class Planner {
   std::vector<int> use_lanes_;        // "the bus lane": the lanes of the use said (lane_names.hpp)
   std::optional<scene::LaneMap::JunctionSpan> junction_;  // "past the junction": the first one ahead
   std::vector<bool> branch_;          // with "the left/right lane": each lane a pocket or a ramp
+  int oncoming_side_ = 0;             // with "the oncoming lane": its side of the ego (+1 left), 0 none
 };
 
 }  // namespace chatsim::agents::motion::detail

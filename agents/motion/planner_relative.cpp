@@ -5,6 +5,18 @@
 // Placements relative to a vehicle that are not simply ahead of or behind it on its lane.
 namespace chatsim::agents::motion::detail {
 
+std::vector<std::pair<double, double>> Planner::gaps_from_anchor(double base_gap, double headway) const {
+  std::vector<std::pair<double, double>> out;
+  if (m_.distance_m) {
+    const double want = std::max(*m_.distance_m, base_gap);
+    for (double gap = base_gap; gap < want + 45; gap += 0.5) out.push_back({gap, std::abs(gap - want)});
+    return out;
+  }
+  for (double gap = base_gap + headway; gap < base_gap + headway + 45; gap += 0.5)
+    out.push_back({gap, gap - base_gap - headway});
+  return out;
+}
+
 // "Past the cone", "parked after the green car": along the anchor's lane away from the ego,
 // whichever way the anchor faces; where its lane (a parking lane) has no room there, the driving
 // lane beside it (within 5 m), at a small cost.
@@ -18,10 +30,10 @@ void Planner::beyond_candidates(int lane, double s0, int dir, std::vector<Candid
     const int k = (scene_.lanes.point_at(li, s_at + d * 5.0) - ego_.p).norm() >= (ap - ego_.p).norm() ? 1 : -1;
     const bool parked = wants_parked(l.for_stopping()) || (a.speed_mps == 0 && nothing_said_about_motion());
     size_t n = 0;
-    for (double gap = base_gap + headway; gap < base_gap + headway + 45; gap += 0.5) {
+    for (const auto& [gap, cost] : gaps_from_anchor(base_gap, headway)) {
       const double s = s_at + k * d * gap;
       if (s < 0 || s > l.length()) continue;
-      out.push_back({li, s, d, parked, gap - base_gap - headway + extra});
+      out.push_back({li, s, d, parked, cost + extra});
       ++n;
     }
     return n;

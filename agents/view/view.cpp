@@ -13,16 +13,20 @@ namespace {
 
 using Words = std::vector<std::string>;
 
-// The lengths a view moves by, and metres per unit (a lane is taken as 3.5 m wide).
-const std::initializer_list<std::string_view> kLengthUnits = {
-    "meters", "meter", "m", "feet", "foot", "ft", "yards", "yard", "centimeters", "cm", "lanes", "lane"};
+// The lengths a view moves by: any length short of kilometres and miles (a view moved that far
+// has no range check of its own yet: "3 km up" stays not understood), and lanes (3.5 m wide).
+const std::vector<std::string_view>& view_units() {
+  static const std::vector<std::string_view> kUnits = [] {
+    auto out = text::length_units();
+    std::erase_if(out, [](std::string_view u) { return text::meters_per(u).value_or(0) >= 1000; });
+    out.insert(out.end(), {"lanes", "lane"});
+    return out;
+  }();
+  return kUnits;
+}
 
 double meters_per(const std::string& unit) {
-  if (unit == "feet" || unit == "foot" || unit == "ft") return 0.3048;
-  if (unit == "yards" || unit == "yard") return 0.9144;
-  if (unit == "centimeters" || unit == "cm") return 0.01;
-  if (unit == "lanes" || unit == "lane") return 3.5;
-  return 1.0;
+  return unit == "lanes" || unit == "lane" ? 3.5 : text::meters_per(unit).value_or(1.0);
 }
 
 // The axis and sign a direction word means, or none.
@@ -53,21 +57,27 @@ bool directions_lead(const Words& w, const std::vector<text::Quantity>& distance
 
 // "three metres up and two to the left": a bare number after a distance takes its unit.
 Words with_units(Words w) {
-  static const std::initializer_list<std::string_view> kUnits = kLengthUnits;
+  const auto& units = view_units();
   // "back ten metres and up one": the number after the direction word.
   for (size_t i = 1; i + 1 < w.size(); ++i) {
     size_t used = 0;
     if (w[i - 1] != "and" || !direction_word(w[i]) || !text::number_at(w, i + 1, &used) || used != 1) continue;
-    if (i + 2 < w.size() && text::has_any({w[i + 2]}, kUnits)) continue;
-    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)), kUnits);
-    if (!before.empty()) w.insert(w.begin() + long(i) + 2, w[before.back().end - 1]);
+    if (i + 2 < w.size() && std::find(units.begin(), units.end(), w[i + 2]) != units.end()) continue;
+    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)), units);
+    if (!before.empty()) {
+      const auto unit = text::words(before.back().unit);
+      w.insert(w.begin() + long(i) + 2, unit.begin(), unit.end());
+    }
   }
   for (size_t i = 1; i + 1 < w.size(); ++i) {
     size_t used = 0;
     if (w[i - 1] != "and" || !text::number_at(w, i, &used) || used != 1) continue;
     if (!direction_word(w[i + 1]) && w[i + 1] != "to") continue;
-    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)), kLengthUnits);
-    if (!before.empty()) w.insert(w.begin() + long(i) + 1, w[before.back().end - 1]);
+    const auto before = text::quantities(Words(w.begin(), w.begin() + long(i)), view_units());
+    if (!before.empty()) {
+      const auto unit = text::words(before.back().unit);
+      w.insert(w.begin() + long(i) + 1, unit.begin(), unit.end());
+    }
   }
   return w;
 }
@@ -146,12 +156,11 @@ void add_translations(const Words& w_in, ViewChange& v) {
     for (size_t i = q.end; i < std::min(wu.size(), q.end + 3); ++i)
       if (wu[i] == "left" || wu[i] == "right") wu[i] = "_";
   }
-  const auto distances = text::quantities(wu, kLengthUnits);
+  const auto distances = text::quantities(wu, view_units());
   const bool lead = directions_lead(wu, distances);
   for (size_t k = 0; k < distances.size(); ++k) {
     const auto& q = distances[k];
-    const std::string unit = wu[q.end - 1];
-    const double f = meters_per(unit);
+    const double f = meters_per(q.unit);
     auto after = [&]() -> std::optional<std::pair<int, double>> {
       const size_t next_start = k + 1 < distances.size() ? distances[k + 1].begin : wu.size();
       for (size_t i = q.end; i < std::min(next_start, q.end + 4); ++i) {
@@ -190,7 +199,7 @@ ViewChange parse_view(const std::string& instruction) {
                                      std::pair{"right lane", "right"}, std::pair{"parking lane", "parking"},
                                      std::pair{"overtaking lane", "inner"}, std::pair{"fast lane", "inner"},
                                      std::pair{"passing lane", "inner"}, std::pair{"slow lane", "outer"},
-                                     std::pair{"curb lane", "outer"}})
+                                     std::pair{"curb lane", "outer"}, std::pair{"other lane", "other"}})
     if (const size_t at = text::find_phrase(w, phrase);
         at != std::string::npos && at >= 2 && (w[at - 1] == "the" || w[at - 1] == "an") &&
         text::has_any({w[at - 2]}, {"to", "into", "in", "onto", "from"}))
@@ -309,7 +318,7 @@ bool contiguous(const std::vector<LaneBeside>& beside, double lateral) {
 // The ego-frame sideways offset of the nearest lane of a kind beside the ego at frame 0.
 std::optional<double> lane_offset(const scene::Scene& scene, const std::string& kind) {
   if (scene.frames.empty() || scene.lanes.empty()) return std::nullopt;
-  const bool by_side = kind == "parking" || kind == "oncoming" || kind == "left" || kind == "right";
+  const bool by_side = kind == "parking" || kind == "oncoming" || kind == "left" || kind == "right" || kind == "other";
   const auto of_use = by_side ? std::vector<int>{} : language::lanes_for_use(scene.lanes, kind);
   const auto beside = lanes_beside(scene);
   std::optional<double> best;
@@ -318,6 +327,8 @@ std::optional<double> lane_offset(const scene::Scene& scene, const std::string& 
     const bool fits = !by_side             ? std::find(of_use.begin(), of_use.end(), b.lane) != of_use.end()
                       : kind == "parking"  ? lane.type == "parking"
                       : kind == "oncoming" ? lane.type == "driving" && b.along < 0
+                      // "the other lane": the nearest lane of traffic beside the ego's, either way
+                      : kind == "other"    ? lane.type == "driving" && std::abs(b.lateral) > 1.5
                       : kind == "left"     ? lane.type == "driving" && b.along > 0 && b.lateral > 1.5
                                            : lane.type == "driving" && b.along > 0 && b.lateral < -1.5;
     if (fits && std::abs(b.lateral) < 20 && contiguous(beside, b.lateral) &&
