@@ -224,17 +224,16 @@ void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention
 // "the taxi at the front of the queue", "the car at the back of the line": the one with none of
 // the others just ahead of it (or behind it), not one in front of the ego.
 bool queue_end(Words& p, Selector& s) {
-  for (const char* end : {"front", "head", "back", "end", "rear", "tail"})
-    for (const char* line : {"queue", "line", "row"}) {
-      const std::string phrase = std::string(end) + " of the " + line;
-      const size_t at = text::find_phrase(p, phrase);
-      if (at == std::string::npos) continue;
-      const std::string e = end;
-      s.order = e == "front" || e == "head" ? "queue_head" : "queue_tail";
-      s.quantity = "one";
-      for (size_t k = at; k < at + 3; ++k) p[k] = "_";  // "queue" stays: it says they wait
-      return true;
-    }
+  for (size_t at = 0; at + 3 < p.size(); ++at) {
+    const bool head = text::has_any({p[at]}, {"front", "head"});
+    if ((!head && !text::has_any({p[at]}, {"back", "end", "rear", "tail"})) || p[at + 1] != "of" ||
+        p[at + 2] != "the" || !text::has_any({p[at + 3]}, {"queue", "line", "row"}))
+      continue;
+    s.order = head ? "queue_head" : "queue_tail";
+    s.quantity = "one";
+    for (size_t k = at; k < at + 3; ++k) p[k] = "_";  // "queue" stays: it says they wait
+    return true;
+  }
   return false;
 }
 

@@ -237,14 +237,15 @@ std::vector<int> lanes_of_place(const scene::LaneMap& map, const std::string& pl
 std::optional<LaneName> find_place_word(const std::vector<std::string>& w) {
   static const std::vector<std::string_view> kAt{"at", "by", "near", "beside", "into", "in", "on", "to", "from"};
   static const std::vector<std::string_view> kFree{"free", "empty", "open", "vacant", "available", "spare"};
-  // Words of places every map has, or that other readers take ("at the front of the queue").
+  // Words of places every map has, or that other readers take ("at the front of the queue"); those
+  // saying where or which (says_where) are not places either.
   static const std::vector<std::string_view> kNotAPlace{
-      "front", "back", "end", "start", "beginning", "side", "sides", "middle", "top", "bottom", "corner", "junction",
-      "crossing", "intersection", "crossroads", "lights", "light", "signal", "signals", "curb", "roundabout", "road",
-      "street", "lane", "lanes", "way", "rear", "edge", "queue", "line", "pavement", "sidewalk", "center", "scene",
+      "front", "back", "end", "start", "beginning", "sides", "top", "bottom", "corner", "junction",
+      "crossing", "intersection", "crossroads", "lights", "light", "signal", "signals", "roundabout", "road",
+      "street", "lane", "lanes", "way", "rear", "edge", "queue", "line", "pavement", "sidewalk", "scene",
       "camera", "view", "moment", "time", "speed", "distance", "place", "spot", "spots", "space", "spaces", "bay",
       "bays", "bend", "curve", "hill", "lot", "park", "area", "shoulder", "median", "verge", "row", "ramp", "exit",
-      "entrance", "entry", "gap", "same", "traffic", "world", "picture", "frame", "ground", "car", "cars"};
+      "entrance", "gap", "traffic", "world", "picture", "frame", "ground", "car", "cars"};
   const auto in = [](const std::vector<std::string_view>& list, const std::string& x) {
     return std::find(list.begin(), list.end(), x) != list.end();
   };

@@ -331,8 +331,9 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
       for (size_t k = 0; k < nw.size(); ++k) free = free && !used[at + k];
       if (!free) continue;
       // "the bus bay", "a bus stop", "the car park", "a taxi rank": a place named after a vehicle.
+      // "two car lengths", "a bus length": a unit of length (text::length_units), not a vehicle.
       static const char* kPlaces[] = {"bay", "bays", "stop", "stops", "lane", "lanes", "station", "shelter", "park",
-                                      "rank", "depot", "garage", "wash", "dealership"};
+                                      "rank", "depot", "garage", "wash", "dealership", "length", "lengths"};
       // "the traffic lights", "a traffic island": a thing named after traffic.
       static const char* kTrafficThings[] = {"light", "lights", "signal", "signals", "sign", "signs", "island",
                                              "islands", "calming", "warden", "wardens"};

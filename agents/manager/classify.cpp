@@ -30,6 +30,15 @@ bool mentions_vehicle(const Words& w) {
   return !lexicon::find_brands(w).empty();
 }
 
+bool says_amount(const Words& w, bool angles) {
+  static const std::vector<std::string_view> kWithAngles = [] {
+    auto units = text::length_units();
+    units.insert(units.end(), {"degrees", "degree"});
+    return units;
+  }();
+  return !text::quantities(w, angles ? kWithAngles : text::length_units()).empty();
+}
+
 namespace {
 
 bool refers_to_added(const Words& w_in) {
@@ -78,7 +87,7 @@ bool classify_whole(const Words& c, Instruction& in) {
       // "put the bus back", "bring the red car back"; not "put it 20 m further back" (a move)
       ((first == "put" || first == "bring") && c.size() > 2 && c.back() == "back" &&
        !has_any(c, {"further", "farther", "more"}) &&
-       text::quantities(c, {"meters", "meter", "m", "feet", "ft", "yards"}).empty())) {
+       !says_amount(c, false))) {
     in.kind = "restore";
     in.target = in.text;
     return true;
@@ -454,7 +463,7 @@ Instruction classify(const Words& c_in) {
     in.target = reference_in(in.text);
     return in;
   }
-  const bool has_amount = !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "yards", "cm"}).empty();
+  const bool has_amount = says_amount(c);
   if (view_words ||
       (has_amount && has_any(c, {"move", "shift", "raise", "lower", "rotate", "look", "pan", "tilt", "turn", "go", "slide",
                                  "nudge", "drop", "lift", "step", "swing", "yaw", "bring"}))) {

@@ -13,6 +13,9 @@ const std::vector<std::string>& delete_verbs();
 
 // A vehicle noun or make among the words (not a cone, barrier or pedestrian).
 bool mentions_vehicle(const std::vector<std::string>& words);
+// An amount in a unit of length (text::length_units: "2 m", "three car lengths") or, with
+// `angles`, in degrees.
+bool says_amount(const std::vector<std::string>& words, bool angles = true);
 
 // "have a tahoe come from the right" -> "add a tahoe come from the right"; other clauses unchanged
 // (said_as_addition.cpp).

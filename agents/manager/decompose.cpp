@@ -416,7 +416,7 @@ std::vector<Instruction> decompose(const std::string& command_in) {
       // "raise the camera 2 m and move it 1 m left", "... and drop it 0.3 m": "it" is the camera
       // of the clause before.
       if ((in.kind == "revise" || in.kind == "unclear") && previous == "view" && !mentions_vehicle(c) &&
-          !text::quantities(c, {"meters", "meter", "m", "degrees", "degree", "feet", "ft", "yards", "cm"}).empty()) {
+          detail::says_amount(c)) {
         in.kind = "view";
         in.target.clear();
       }
@@ -430,7 +430,7 @@ std::vector<Instruction> decompose(const std::string& command_in) {
                                !mentions_vehicle(c) && !text::has_any(c, {"it", "them", "camera", "view", "ego"});
       if (bare_motion && previous == "add" && !out.empty() && out.back().kind == "add" &&
           (in.kind == "unclear" || in.kind == "view") &&
-          text::quantities(c, {"degrees", "degree", "meters", "meter", "m"}).empty()) {
+          !detail::says_amount(c)) {
         out.back().text += " and " + in.text;
         continue;
       }

@@ -123,8 +123,7 @@ double Planner::said_lane_penalty(int lane, double s, int dir) const {
   if (*m_.lane == "ramp") return scene_.lanes.merges(lane) ? 0 : 60;
   if (*m_.lane == "oncoming") {
     // Parked "on the other side of the road": a kerb or bay beyond the oncoming traffic.
-    const bool parked = m_.speed == "static" || m_.action == "static";
-    if (parked && l.for_stopping()) return oncoming_side_ * lat > 1.5 ? std::abs(lat) * 0.5 : 60;
+    if (wants_parked(false) && l.for_stopping()) return oncoming_side_ * lat > 1.5 ? std::abs(lat) * 0.5 : 60;
     return l.type == "driving" && !same_way_as_ego(lane, s) ? std::abs(lat) * 0.5 : 60;
   }
   // "the right lane" where the ego drives in the rightmost lane: that lane (and so for the left).

@@ -43,6 +43,14 @@ TEST(SaidAtTheWorks, DistancesInCarLengthsInSecondsAndFromAVehicle) {
   const auto back = works("a", "move the camera back three car lengths")["view"]["translation_m"];
   EXPECT_NEAR(back[0].get<double>(), -13.5, 0.01);
   EXPECT_NEAR(start_x(works("b", "add a red car 10 m behind the van"), 0), 12.0, 1.5);
+  // A unit of length names no vehicle: the camera moves on, and the vehicle added is no bus.
+  const auto on = works("c", "raise the camera 2 m and move it two car lengths forward")["view"]["translation_m"];
+  EXPECT_NEAR(on[0].get<double>(), 9.0, 0.01);
+  EXPECT_NEAR(on[2].get<double>(), 2.0, 0.01);
+  const auto behind = works("d", "add a vehicle 2 bus lengths behind me");
+  ASSERT_EQ(behind["added"].size(), 1u);
+  EXPECT_EQ(behind["added"][0]["category"], "vehicle.car");
+  EXPECT_NEAR(start_x(behind, 0), -24.0, 3.0);
   LayoutChat fuel("blind-fuel");  // the ego drives at 8 m/s
   EXPECT_NEAR(start_x(fuel("a", "add a car 2 seconds ahead of me"), 0), 16.0, 2.0);
 }
