@@ -21,6 +21,7 @@ import layouts_v25
 import layouts_v26
 import layouts_v27
 import layouts_v28
+import layouts_v29
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -416,3 +417,4 @@ if __name__ == "__main__":
     layouts_v26.main()
     layouts_v27.main()
     layouts_v28.main()
+    layouts_v29.main()
