@@ -1,5 +1,7 @@
 #include "agents/decision/decision_agents.hpp"
 
+#include <algorithm>
+
 #include "agents/asset/asset_choice.hpp"
 #include "agents/core/scene_cache.hpp"
 #include "agents/deletion/deletion.hpp"
@@ -107,8 +109,16 @@ class DeletionAgent : public DecisionAgent {
     }
     if (call.action != "select") return unknown_action(call, "select, locate");
     const json request = decide(call.args.at("instruction").get<std::string>());
-    const auto removed = call.args.value("removed", std::vector<std::string>{});
-    const auto sel = deletion::select_objects(*scene, deletion::deletion_request_from_json(request), removed);
+    auto removed = call.args.value("removed", std::vector<std::string>{});
+    // "among": select only among these ("put the truck back": among the removed ones).
+    if (call.args.contains("among")) {
+      const auto among = call.args["among"].get<std::vector<std::string>>();
+      removed.clear();
+      for (const auto& o : scene->objects)
+        if (std::find(among.begin(), among.end(), o.id) == among.end()) removed.push_back(o.id);
+    }
+    const auto it = call.args.value("it", std::vector<std::string>{});
+    const auto sel = deletion::select_objects(*scene, deletion::deletion_request_from_json(request), removed, it);
     // Where each selected object starts, so that a vehicle can be placed relative to it.
     json objects = json::array();
     for (const auto& id : sel.ids)

@@ -48,12 +48,7 @@ std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
   return out;
 }
 
-int ordinal(const std::string& w) {
-  static const char* words[] = {"first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth"};
-  for (int i = 0; i < 8; ++i)
-    if (w == words[i]) return i + 1;
-  return 0;  // "2nd" reaches here as "second" (text::words)
-}
+int ordinal(const std::string& w) { return text::ordinal_value(w); }
 
 // "the tractor": an English noun the interpreter does not know where the thing to delete is
 // named; nothing in a scene is one, so the request is refused rather than guessed.
@@ -242,15 +237,19 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   // "the bike in the bus lane", "the left-turn lane": a lane named by its use; its words say
   // neither what the object is nor on which side it stands.
   Words p = said;
-  if (const auto name = language::find_lane_name(said)) {
+  if (const auto beyond = language::find_beyond_place(said)) {  // "everything on the other side of the busway"
+    s.beyond_use = beyond->use;
+    for (size_t k = beyond->begin; k < beyond->end; ++k) p[k] = "_";
+  }
+  if (const auto name = language::find_lane_name(p)) {
     s.lane_use = name->use;
     for (size_t k = name->begin; k < name->end; ++k) p[k] = "_";
-  } else if (const size_t at = text::find_any(said, {"waiting to turn", "queuing to turn", "queueing to turn",
+  } else if (const size_t at = text::find_any(p, {"waiting to turn", "queuing to turn", "queueing to turn",
                                                     "lined up to turn", "about to turn"});
-             at != std::string::npos && at + 3 < said.size() && (said[at + 3] == "left" || said[at + 3] == "right")) {
-    s.lane_use = "turn_" + said[at + 3];  // in a turn lane when the map has one (selection.cpp)
+             at != std::string::npos && at + 3 < p.size() && (p[at + 3] == "left" || p[at + 3] == "right")) {
+    s.lane_use = "turn_" + p[at + 3];  // in a turn lane when the map has one (selection.cpp)
     p[at + 3] = "_";
-  } else if (const auto place = language::find_place_word(said)) {
+  } else if (const auto place = language::find_place_word(p)) {
     s.lane_use = place->use;  // "the cars at the pumps": its words stay for the other readings
   }
   const auto types = lexicon::find_types(p);
@@ -289,13 +288,12 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   if (text::has_any(p, {"coming toward", "toward me", "toward us", "approaching", "coming at", "coming down",
                         "heading down", "descending", "downhill"}))
     s.approaching = true;
-  // "the truck behind it": placed by the object the phrase before named, not by the ego.
-  if (previous != nullptr) {
-    if (text::has_any(p, {"behind it", "behind that one", "after it"})) s.of_previous = "behind";
-    else if (text::has_any(p, {"in front of it", "ahead of it"})) s.of_previous = "front";
-    else if (text::has_any(p, {"next to it", "beside it", "alongside it"})) s.of_previous = "beside";
-    else if (text::has_any(p, {"same way", "same direction"})) s.of_previous = "same_way";
-  }
+  // "the truck behind it": placed by the object the phrase before named (or, with none, the one
+  // an earlier round spoke of: select_objects' `it`), not by the ego.
+  if (text::has_any(p, {"behind it", "behind that one", "after it", "behind them"})) s.of_previous = "behind";
+  else if (text::has_any(p, {"in front of it", "ahead of it", "in front of them"})) s.of_previous = "front";
+  else if (text::has_any(p, {"next to it", "beside it", "alongside it", "next to them", "beside them"})) s.of_previous = "beside";
+  else if (previous != nullptr && text::has_any(p, {"same way", "same direction"})) s.of_previous = "same_way";
   if (text::has_any(p, {"following me", "following us", "tailing me", "tailing us", "tailgating me", "tailgating us",
                         "on my tail", "on our tail", "right behind me", "right behind us"})) {
     s.lane = "ego";
@@ -365,8 +363,9 @@ std::string describe(const Selector& s) {
   out += s.noun.empty() ? "object" : s.noun;
   if (s.region) out += " (" + *s.region + ")";
   if (s.lane) out += " (lane: " + *s.lane + ")";
-  if (s.lane_use) out += " (in the " + *s.lane_use + " lane)";
+  if (s.lane_use) out += " (in the " + language::use_words(*s.lane_use) + ")";
   if (s.road_side) out += *s.road_side == "far" ? " across the road" : " on the ego's side of the road";
+  if (s.beyond_use) out += " beyond the " + language::use_words(*s.beyond_use);
   if (s.junction) out += " " + *s.junction + " the junction";
   if (s.within_m) out += " within " + metres_text(*s.within_m) + " m";
   if (s.beyond_m) out += " beyond " + metres_text(*s.beyond_m) + " m";

@@ -19,6 +19,7 @@ struct Selector {
   std::optional<std::string> lane;      // ego, left, middle, right, oncoming, cross, parking (lane_relation.hpp)
   std::optional<std::string> lane_use;  // bus, turn, turn_left, turn_right, cycle, tram, taxi, hov (lane_names.hpp)
   std::optional<std::string> road_side;  // near (my side of the road), far (across the road)
+  std::optional<std::string> beyond_use;  // "on the other side of the busway": past the lanes of that use
   std::optional<std::string> junction;   // before, after: "the cars parked past the junction" (first one ahead)
   std::optional<std::string> of_previous;  // behind, front, beside, near, same_way: "... and the truck behind it"
   bool anchor_only = false;             // "closest to the police car": it places the next selector, stays
@@ -49,9 +50,10 @@ struct Selection {
   std::vector<std::string> ids;         // sorted by distance from the ego at frame 0
   std::vector<std::string> problems;    // targets that matched nothing, with why
 };
-// The objects selected, among those not already removed.
+// The objects selected, among those not already removed. `it`: the objects an earlier round spoke
+// of (removed ones too), which "the car behind it" is placed by when no phrase before names one.
 Selection select_objects(const scene::Scene& scene, const DeletionRequest& request,
-                         const std::vector<std::string>& removed);
+                         const std::vector<std::string>& removed, const std::vector<std::string>& it = {});
 
 std::string describe(const Selector& s);
 

@@ -14,6 +14,7 @@ nlohmann::json selector_json(const Selector& s) {
   util::put_optional(j, "lane", s.lane);
   util::put_optional(j, "lane_use", s.lane_use);
   util::put_optional(j, "road_side", s.road_side);
+  util::put_optional(j, "beyond_use", s.beyond_use);
   util::put_optional(j, "junction", s.junction);
   util::put_optional(j, "of_previous", s.of_previous);
   if (s.anchor_only) j["anchor_only"] = true;
@@ -42,6 +43,7 @@ Selector selector_from(const nlohmann::json& j) {
   util::get_optional(j, "lane", s.lane);
   util::get_optional(j, "lane_use", s.lane_use);
   util::get_optional(j, "road_side", s.road_side);
+  util::get_optional(j, "beyond_use", s.beyond_use);
   util::get_optional(j, "junction", s.junction);
   util::get_optional(j, "of_previous", s.of_previous);
   s.anchor_only = j.value("anchor_only", false);

@@ -34,6 +34,9 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
     const Eigen::Vector2d d = x->pe - anchor.pe;
     const double along = c * d.x() + s * d.y(), side = -s * d.x() + c * d.y();
     const double lane_room = 3 + 0.2 * std::abs(along);  // a road may bend between them
+    // Behind or ahead of a moving vehicle: in its stream, not oncoming past it.
+    const bool oncoming = anchor.speed > 0.5 && x->speed > 0.5 && std::cos(x->yaw - anchor.yaw) < 0;
+    if (oncoming && (relation == "behind" || relation == "front")) continue;
     const bool ok = relation == "same_way" ? std::cos(x->yaw - anchor.yaw) > 0.7 && x->speed > 0.5
                     : relation == "behind" ? (along < -1 && std::abs(side) < lane_room)
                     : relation == "front" ? (along > 1 && std::abs(side) < lane_room)
@@ -50,6 +53,13 @@ std::vector<const Candidate*> placed_by(const std::vector<const Candidate*>& m, 
     return (a->pe - anchor.pe).norm() < (b->pe - anchor.pe).norm();
   });
   return out;
+}
+
+// Whether x stands close by the anchor: within 30 m along its heading and 2.5 m across (its lane).
+bool right_there(const Candidate& anchor, const Candidate& x) {
+  const Eigen::Vector2d d = x.pe - anchor.pe;
+  const double c = std::cos(anchor.yaw), s = std::sin(anchor.yaw);
+  return std::abs(c * d.x() + s * d.y()) < 30 && std::abs(-s * d.x() + c * d.y()) < 2.5;
 }
 
 bool scene_has_parking(const scene::Scene& scene) {
@@ -225,6 +235,27 @@ void keep_on_lanes_of_use(const Selector& t, const scene::Scene& scene, std::vec
   });
 }
 
+// "everything on the other side of the busway": past every lane of that use beside the object, on
+// the side away from the ego, in each lane's own frame (a bending road reads the same). A map
+// without such a lane has nothing past it.
+void keep_beyond(const Selector& t, const scene::Scene& scene, std::vector<const Candidate*>& m) {
+  if (!t.beyond_use || scene.frames.empty()) return;
+  const auto lanes = language::lanes_for_use(scene, *t.beyond_use);
+  const Eigen::Vector2d ego = scene.frames.front().ego_to_world.translation().head<2>();
+  std::erase_if(m, [&](const Candidate* c) {
+    const Eigen::Vector2d p = c->object->track.front().center.head<2>();
+    int beside = 0;
+    for (const int l : lanes) {
+      const auto& lane = scene.lanes.lanes()[size_t(l)];
+      const auto at = scene.lanes.project(l, p);
+      if (at.s <= 0 || at.s >= lane.length()) continue;
+      ++beside;
+      if (at.lateral * scene.lanes.project(l, ego).lateral >= 0 || std::abs(at.lateral) < lane.width / 2) return true;
+    }
+    return beside == 0;
+  });
+}
+
 // "the cars parked past the junction": beyond (or short of) the first junction ahead of the ego.
 // A map with none says nothing either way.
 void keep_by_junction(const Selector& t, const scene::Scene& scene, std::vector<const Candidate*>& m) {
@@ -278,7 +309,8 @@ std::optional<Candidate> candidate_of(const scene::Scene& scene, const scene::Ob
 
 }  // namespace
 
-Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, const std::vector<std::string>& removed) {
+Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, const std::vector<std::string>& removed,
+                         const std::vector<std::string>& it) {
   Selection out;
   if (r.unsupported) {
     out.problems.push_back("there is no " + *r.unsupported + " in the scene, and it is not something that can be selected");
@@ -296,7 +328,15 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
       if (auto c = candidate_of(scene, o, from_start, reversing)) cands.push_back(*c);
   std::sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) { return a.d0 < b.d0; });
   std::vector<std::string> chosen;
-  const Candidate* last = nullptr;  // what the phrase before chose ("... and the truck behind it")
+  // What "it" was in an earlier round: the first phrase's relation places by it.
+  std::vector<Candidate> earlier;
+  for (const auto& o : scene.objects)
+    if (std::find(it.begin(), it.end(), o.id) != it.end())
+      if (auto c = candidate_of(scene, o, from_start, reversing)) earlier.push_back(*c);
+  const Candidate* last = earlier.empty() ? nullptr : &earlier.front();  // what the phrase before chose ("... and the truck behind it")
+  // "the car queuing behind the truck": of the trucks, the one with such a car behind it (nearest
+  // first); the anchor phrase's matches wait for the phrase placed by them.
+  std::vector<const Candidate*> anchors;
   for (const auto& said : r.targets) {
     Selector t = said;
     if (t.lane == "main") t.lane = main_road(scene);
@@ -313,7 +353,30 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     }
     keep_on_lanes_of_use(t, scene, m);
     keep_by_junction(t, scene, m);
-    if (t.of_previous) m = last != nullptr ? placed_by(m, *last, *t.of_previous) : std::vector<const Candidate*>{};
+    keep_beyond(t, scene, m);
+    if (t.of_previous && !anchors.empty()) {
+      // The first anchor with one right there (in its lane, within 30 m), else the first with any.
+      const auto all = m;
+      std::optional<std::vector<const Candidate*>> loose;
+      m.clear();
+      for (const auto* a : anchors) {
+        auto placed = placed_by(all, *a, *t.of_previous);
+        if (!placed.empty() && right_there(*a, *placed.front())) {
+          m = std::move(placed);
+          break;
+        }
+        if (!placed.empty() && !loose) loose = std::move(placed);
+      }
+      if (m.empty() && loose) m = std::move(*loose);
+    } else if (t.of_previous && last != nullptr) {
+      m = placed_by(m, *last, *t.of_previous);
+    } else if (t.of_previous) {  // "it" names nothing: behind or ahead of the ego, as the words say
+      Selector by_ego = t;
+      by_ego.of_previous.reset();
+      if (*t.of_previous == "behind" || *t.of_previous == "front") by_ego.region = *t.of_previous == "behind" ? "back" : "front";
+      std::erase_if(m, [&](const Candidate* c) { return !matches(by_ego, *c); });
+    }
+    anchors.clear();
     widen_or_narrow(t, scene, cands, m);
     if (m.empty()) {
       out.problems.push_back("no " + describe(t).substr(t.quantity == "all" ? 6 : 4) + " in the scene" +
@@ -322,7 +385,10 @@ Selection select_objects(const scene::Scene& scene, const DeletionRequest& r, co
     }
     prefer_said_kind(t, m);
     last = m.front();
-    if (t.anchor_only) continue;
+    if (t.anchor_only) {
+      anchors = m;
+      continue;
+    }
     if (t.quantity == "all") {
       for (const auto* c : m) chosen.push_back(c->object->id);
     } else if (t.quantity == "n") {

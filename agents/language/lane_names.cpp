@@ -24,16 +24,32 @@ constexpr Role kRoles[] = {
     {"bike", "cycle", 0},      {"bicycle", "cycle", 0},   {"tram", "tram", 0},      {"taxi", "taxi", 0},
     {"hov", "hov", 0},         {"carpool", "hov", 0}};
 
+// Other words a map's ids may use for a place a user names ("the toll lanes" on a map of
+// "booth_1" ... "booth_4"), the word itself first.
+std::vector<std::string> place_words(const std::string& word) {
+  static const std::vector<std::vector<std::string>> kSame{
+      {"toll", "booth", "tollbooth", "plaza"}, {"pump", "fuel", "petrol"}, {"stop", "platform"},
+      {"loading", "delivery", "unloading"}, {"rank", "taxi", "cab"}, {"charger", "charging", "ev"}};
+  std::vector<std::string> out{word};
+  for (const auto& group : kSame)
+    if (std::find(group.begin(), group.end(), word) != group.end())
+      for (const auto& other : group)
+        if (other != word) out.push_back(other);
+  return out;
+}
+
 // Id words a map may use for each role.
 std::vector<std::string> id_words(const std::string& role) {
   if (role == "turn") return {"turn", "turning", "pocket", "filter"};
-  if (role == "cycle") return {"cycle", "bike", "bicycle"};
+  if (role == "cycle") return {"cycle", "bike", "bicycle", "cycleway", "bikeway"};
+  if (role == "bus") return {"bus", "busway", "buslane", "transitway"};
+  if (role == "tram") return {"tram", "tramway", "streetcar"};
   if (role == "hov") return {"hov", "carpool"};
   if (role == "roundabout") return {"roundabout", "ring", "circle", "rotary", "circulatory"};
   if (role == "car_park") return {"carpark", "park", "lot", "garage"};
   if (role == "lay_by") return {"layby", "lay", "passing", "turnout", "pullout", "refuge"};
   if (role == "fuel_station") return {"station", "pump", "pumps", "fuel", "petrol", "gas", "forecourt"};
-  return {role};
+  return place_words(role);
 }
 
 // Words before "lane", "road" or "track" that say where or which, not what the lane is for: the
@@ -59,6 +75,20 @@ bool says_where(const std::string& w) {
 }
 
 }  // namespace
+
+std::string use_words(const std::string& use) {
+  if (use.starts_with("place:")) {
+    std::string out = use.substr(6);
+    if (const size_t hash = out.find('#'); hash != std::string::npos) out[hash] = ' ';
+    return out;
+  }
+  if (use == "turn_left" || use == "turn_right") return use.substr(5) + "-turn lane";
+  std::string out = use;
+  std::replace(out.begin(), out.end(), '_', ' ');
+  const bool a_lane = std::any_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return use == r.role; }) ||
+                      use.starts_with("turn") || use == "closed";
+  return a_lane ? out + " lane" : out;
+}
 
 bool is_known_use(const std::string& use) {
   if (use.starts_with("turn") || use == "roundabout" || use == "car_park" || use == "lay_by" || use == "ego_turn" ||
@@ -117,6 +147,13 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
                             "gas stations", "petrol stations", "forecourt"})
     if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
       return LaneName{"fuel_station", at, at + text::words(place).size()};
+  // "the busway", "on the cycleway", "along the tram tracks": a lane of that use named by one word.
+  for (const auto& [place, role] : std::initializer_list<std::pair<const char*, const char*>>{
+           {"busway", "bus"}, {"busways", "bus"}, {"bus only lane", "bus"}, {"cycleway", "cycle"}, {"bikeway", "cycle"},
+           {"cycle path", "cycle"}, {"bike path", "cycle"}, {"tramway", "tram"}, {"tram tracks", "tram"},
+           {"tram line", "tram"}})
+    if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
+      return LaneName{role, at, at + text::words(place).size()};
   // "in the passing place", "pull into the lay-by": a place beside the road to stop at.
   for (const char* place : {"passing place", "passing places", "passing bay", "passing bays", "lay-by", "lay-bys",
                             "layby", "laybys", "lay by", "turnout", "turnouts", "pullout", "pullouts"})
@@ -212,8 +249,10 @@ std::string singular(const std::string& x) {
 std::vector<int> lanes_of_place(const scene::LaneMap& map, const std::string& place) {
   const size_t hash = place.find('#');
   const std::string word = place.substr(0, hash);
-  std::vector<int> out = map.named(word);
-  if (out.empty()) out = map.named(singular(word));
+  std::vector<int> out;
+  for (const auto& said : {word, singular(word)})
+    for (const auto& id_word : place_words(said))
+      if (out.empty()) out = map.named(id_word);
   if (hash == std::string::npos) return out;
   const std::string number = place.substr(hash + 1);
   std::erase_if(out, [&](int l) {
@@ -234,11 +273,16 @@ std::vector<int> lanes_of_place(const scene::LaneMap& map, const std::string& pl
 
 }  // namespace
 
-std::optional<LaneName> find_place_word(const std::vector<std::string>& w) {
-  static const std::vector<std::string_view> kAt{"at", "by", "near", "beside", "into", "in", "on", "to", "from"};
-  static const std::vector<std::string_view> kFree{"free", "empty", "open", "vacant", "available", "spare"};
-  // Words of places every map has, or that other readers take ("at the front of the queue"); those
-  // saying where or which (says_where) are not places either.
+namespace {
+
+bool in(const std::vector<std::string_view>& list, const std::string& x) {
+  return std::find(list.begin(), list.end(), x) != list.end();
+}
+
+// Whether a word may be a place the map's lane ids name ("pumps", "busway"): not a word of places
+// every map has, or that other readers take ("at the front of the queue"), nor one saying where or
+// which (says_where), nor a vehicle.
+bool may_name_a_place(const std::string& noun) {
   static const std::vector<std::string_view> kNotAPlace{
       "front", "back", "end", "start", "beginning", "sides", "top", "bottom", "corner", "junction",
       "crossing", "intersection", "crossroads", "lights", "light", "signal", "signals", "roundabout", "road",
@@ -246,9 +290,31 @@ std::optional<LaneName> find_place_word(const std::vector<std::string>& w) {
       "camera", "view", "moment", "time", "speed", "distance", "place", "spot", "spots", "space", "spaces", "bay",
       "bays", "bend", "curve", "hill", "lot", "park", "area", "shoulder", "median", "verge", "row", "ramp", "exit",
       "entrance", "gap", "traffic", "world", "picture", "frame", "ground", "car", "cars"};
-  const auto in = [](const std::vector<std::string_view>& list, const std::string& x) {
-    return std::find(list.begin(), list.end(), x) != list.end();
-  };
+  const bool word = noun.size() >= 3 && std::all_of(noun.begin(), noun.end(), [](char c) {
+                      return std::isalpha(static_cast<unsigned char>(c));
+                    });
+  return word && !says_where(noun) && !in(kNotAPlace, noun) && lexicon::find_types({noun}).empty();
+}
+
+}  // namespace
+
+std::optional<LaneName> find_beyond_place(const std::vector<std::string>& w) {
+  for (const char* where : {"other side of the", "far side of the", "beyond the", "across the"}) {
+    const size_t at = text::find_phrase(w, where);
+    if (at == std::string::npos) continue;
+    const size_t from = at + text::words(where).size();
+    if (from >= w.size()) continue;
+    const std::vector<std::string> rest(w.begin() + long(from) - 1, w.end());  // from "the"
+    if (const auto name = find_lane_name(rest); name && name->begin <= 1)
+      return LaneName{name->use, at, from - 1 + name->end};
+    if (may_name_a_place(w[from])) return LaneName{"place:" + w[from], at, from + 1};
+  }
+  return std::nullopt;
+}
+
+std::optional<LaneName> find_place_word(const std::vector<std::string>& w) {
+  static const std::vector<std::string_view> kAt{"at", "by", "near", "beside", "into", "in", "on", "to", "from", "through", "via"};
+  static const std::vector<std::string_view> kFree{"free", "empty", "open", "vacant", "available", "spare"};
   const auto numbered = [&](size_t k) {  // "pump 2", "bay three"
     size_t used = 0;
     const auto n = text::number_at(w, k + 1, &used);
@@ -258,16 +324,18 @@ std::optional<LaneName> find_place_word(const std::vector<std::string>& w) {
     if (!in(kAt, w[i]) || (w[i + 1] != "the" && !numbered(i + 1))) continue;
     size_t k = w[i + 1] == "the" ? i + 2 : i + 1;
     if (in(kFree, w[k]) && k + 1 < w.size()) ++k;
+    // "at the second booth": its number before it.
+    const int nth = w[i + 1] == "the" && k + 1 < w.size() ? text::ordinal_value(w[k]) : 0;
+    if (nth > 0) ++k;
     const std::string& noun = w[k];
-    const bool word = noun.size() >= 3 && std::all_of(noun.begin(), noun.end(), [](char c) {
-                        return std::isalpha(static_cast<unsigned char>(c));
-                      });
-    if (!word || says_where(noun) || in(kNotAPlace, noun) || !lexicon::find_types({noun}).empty()) continue;
+    if (!may_name_a_place(noun)) continue;
     std::string use = "place:" + noun;
     size_t end = k + 1;
     if (const auto n = numbered(k)) {
       use += "#" + std::to_string(*n);
       end = k + 2;
+    } else if (nth > 0) {
+      use += "#" + std::to_string(nth);
     }
     return LaneName{use, i + 1, end};
   }

@@ -23,6 +23,9 @@ struct LaneName {
   size_t end = 0;
 };
 
+// A use as a user would say it, for messages: "bus lane", "car park", "pump 2", "busway".
+std::string use_words(const std::string& use);
+
 // Whether a use is one of the interpreter's own (bus, turn..., cycle, ego_turn, ...), as opposed
 // to a word of the map's ("service", "dropoff") that only the map's lane ids can give a meaning.
 bool is_known_use(const std::string& use);
@@ -34,6 +37,12 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w);
 // may have (use "place:pump", "place:pump#2"). Weaker than a lane name: a map without such a lane
 // says nothing, so callers keep the words for their other readings.
 std::optional<LaneName> find_place_word(const std::vector<std::string>& w);
+
+// "on the other side of the busway", "beyond the bus lane", "across the tram tracks": the place
+// past which the objects meant stand (a lane name, or a place word as find_place_word reads it);
+// [begin, end) spans the whole phrase. Roads and junctions are not places here (their readers
+// take them).
+std::optional<LaneName> find_beyond_place(const std::vector<std::string>& w);
 
 // "past the junction", "before the crossing", "near the lights": where along the road, by the
 // first junction ahead (after, before or near), not the cross street's lane; the words are blanked.

@@ -351,6 +351,12 @@ std::vector<TypeMention> find_types(const std::vector<std::string>& w) {
     }
   }
   std::sort(out.begin(), out.end(), [](const TypeMention& a, const TypeMention& b) { return a.begin < b.begin; });
+  // "a guy on a motorbike", "a woman driving a taxi": the vehicle, not its rider.
+  for (size_t i = 0; i + 1 < out.size(); ++i) {
+    if (!out[i].type.living() || out[i + 1].type.living() || out[i + 1].begin > out[i].end + 3) continue;
+    const std::vector<std::string> between(w.begin() + long(out[i].end), w.begin() + long(out[i + 1].begin));
+    if (text::has_any(between, {"on", "riding", "driving", "in", "astride", "with"})) out.erase(out.begin() + long(i--));
+  }
   return out;
 }
 

@@ -76,10 +76,11 @@ std::string fold_characters(std::string_view s) {
   return out;
 }
 
+constexpr const char* kOrdinals[] = {"first", "second", "third", "fourth", "fifth",
+                                     "sixth", "seventh", "eighth", "ninth", "tenth"};
+
 // "2nd", "3rd" (split as "2" "nd" above) -> "second", "third": one spelling for every reader.
 void ordinals_to_words(std::vector<std::string>& w) {
-  static const char* kOrdinals[] = {"first",  "second", "third", "fourth", "fifth",
-                                    "sixth",  "seventh", "eighth", "ninth", "tenth"};
   for (size_t i = 0; i + 1 < w.size(); ++i) {
     const auto& suffix = w[i + 1];
     if (suffix != "st" && suffix != "nd" && suffix != "rd" && suffix != "th") continue;
@@ -92,6 +93,12 @@ void ordinals_to_words(std::vector<std::string>& w) {
 }
 
 }  // namespace
+
+int ordinal_value(const std::string& w) {
+  for (int i = 0; i < 10; ++i)
+    if (w == kOrdinals[i]) return i + 1;
+  return 0;
+}
 
 std::vector<std::string> words(std::string_view s_in) {
   const std::string folded = fold_characters(s_in);

@@ -45,6 +45,8 @@ const std::vector<std::string_view>& length_units();
 std::optional<double> meters_per(std::string_view unit);
 
 bool is_number_word(const std::string& w);
+// "first" .. "tenth" -> 1 .. 10 ("2nd" reaches readers as "second"); 0 for any other word.
+int ordinal_value(const std::string& w);
 
 // Amounts said as fractions of a turn ("a quarter turn", "half a turn", "a right angle") become
 // degrees ("90 degrees") so that every agent reads them as angles.

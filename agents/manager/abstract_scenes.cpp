@@ -1,8 +1,11 @@
 // Abstract scenes (a jam, a busy road, a road block, roadworks): many vehicles placed by one
 // request, each strictly (no collision, on the lane asked for), fewer rather than wrong.
+#include <algorithm>
+#include <iterator>
 #include <map>
 #include <optional>
 
+#include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
 #include "agents/manager/manager.hpp"
 
@@ -10,8 +13,25 @@ namespace chatsim::agents::manager {
 
 using nlohmann::json;
 
+namespace {
+
+// "jammed with buses", "a queue of trucks": one kind of vehicle said for the whole scene (not
+// "cars", "vehicles" or "traffic": those are the usual mix).
+std::optional<std::string> said_kind(const std::string& text) {
+  for (const auto& t : lexicon::find_types(text::words(text)))
+    if (t.type.addable() && t.type.type != "car" && t.type.type != "cone" && t.type.type != "barrier" &&
+        t.type.type != "vehicle")
+      return t.type.type;
+  return std::nullopt;
+}
+
+}  // namespace
+
 void Manager::do_abstract(Conversation& c, const Instruction& in, Round& round) {
-  static const char* kinds[] = {"car", "suv", "van", "car", "car", "suv", "car", "van", "car", "car"};
+  static const char* mix[] = {"car", "suv", "van", "car", "car", "suv", "car", "van", "car", "car"};
+  const auto one_kind = in.kind == "traffic_jam" || in.kind == "busy_road" ? said_kind(in.text) : std::nullopt;
+  std::vector<std::string> kinds(std::begin(mix), std::end(mix));
+  if (one_kind) std::fill(kinds.begin(), kinds.end(), *one_kind);
   static const char* colors[] = {"white", "black", "silver", "red", "blue", "gray", "white", "green", "black", "yellow"};
   int placed = 0, wanted = 0;
   std::map<std::string, int> failed;  // per place asked for

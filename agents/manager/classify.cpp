@@ -121,7 +121,7 @@ bool classify_whole(const Words& c, Instruction& in) {
     return true;
   }
   // "no parked cars", "nothing parked anywhere": what should not be there is to be removed.
-  if ((first == "no" || first == "nothing") && c.size() > 1 &&
+  if ((first == "no" || first == "nothing") && c.size() > 1 && !bare_place(c) &&
       (mentions_vehicle(c) || has_any(c, {"parked", "moving", "stopped"}))) {
     in.kind = "delete";
     in.text = "remove all " + text::join(c, 1) + (mentions_vehicle(c) ? "" : " vehicles");
@@ -328,23 +328,6 @@ bool classify_deletion(const Words& c, bool vehicle, bool added_ref, Instruction
   return false;
 }
 
-// Words around a correction that say nothing of their own ("no, red instead please").
-bool is_filler_word(const std::string& x) {
-  static const std::vector<std::string> kFiller{"no", "nope", "actually", "rather", "instead", "please", "sorry",
-                                                "i", "meant", "mean", "make", "it", "in", "oh", "wait", "hmm", "better",
-                                                "let's", "lets", "go", "with", "try", "then", "and", "a", "the"};
-  return std::find(kFiller.begin(), kFiller.end(), x) != kFiller.end();
-}
-
-// A clause of a colour and filler words only ("no, dark green", "red instead").
-bool bare_color(const Words& c) {
-  if (lexicon::find_colors(c).empty()) return false;
-  return std::all_of(c.begin(), c.end(), [](const std::string& x) {
-    return is_filler_word(x) || lexicon::is_color_word(x) || x == "dark" || x == "light" || x == "bright" ||
-           x == "pale" || x == "deep";
-  });
-}
-
 // An addition: by its verb, a new subject ("a pickup should come out..."), a copy ("another
 // one"), or a dangerous cut-in. A named thing that cannot be added is unclear, with the thing.
 bool classify_addition(const Words& c, bool vehicle, Instruction& in) {
@@ -426,8 +409,22 @@ Instruction classify(const Words& c_in) {
   Instruction in;
   in.text = text::join(c);
   if (classify_whole(c, in)) return in;
-  c = fill_addition(c);  // not "fill the far side with heavy traffic" (a busy road, above)
+  c = existing_one(fill_addition(c));  // not "fill the far side with heavy traffic" (a busy road, above)
   in.text = text::join(c);
+  // "slower", "a bit closer", "in front of the bendy bus", "behind it": a change or a place said
+  // alone revises what was spoken of last.
+  if (const auto change = bare_change(c)) {
+    in.kind = "revise";
+    in.target = "it";
+    in.text = "make it " + *change;
+    return in;
+  }
+  if (const auto place = bare_place(c)) {
+    in.kind = "revise";
+    in.target = "it";
+    in.text = "put it " + *place;
+    return in;
+  }
   const bool vehicle = mentions_vehicle(c);
   const bool added_ref = refers_to_added(c);
   if (classify_deletion(c, vehicle, added_ref, in) || classify_addition(c, vehicle, in)) return in;
@@ -446,9 +443,15 @@ Instruction classify(const Words& c_in) {
   const bool ego_drives = !vehicle && !added_ref && c.size() > 1 &&
                           has_any({c.front()}, {"drive", "go", "speed", "crawl", "cruise", "roll"}) &&
                           has_any(c, {"faster", "slower", "slowly", "quickly", "fast", "slow", "speed up", "slow down"});
+  // "shift us one lane left", "move me up 2 m": we are where the cameras are.
+  bool moves_us = false;
+  for (size_t i = 0; i + 1 < c.size() && !vehicle && !added_ref; ++i)
+    moves_us = moves_us || (has_any({c[i]}, {"move", "shift", "slide", "nudge", "take", "put", "bring", "lift", "raise",
+                                             "lower", "drop", "place", "position", "pull", "push"}) &&
+                            has_any({c[i + 1]}, {"us", "me", "ourselves", "myself"}));
   const bool view_words = has_any(c, {"view", "camera", "viewpoint", "perspective", "vantage", "ego", "point of view"}) ||
                           has_any(c, {"i drive", "we drive", "drive ahead", "drives ahead"}) || view_idiom || seen_from ||
-                          ego_drives;
+                          ego_drives || moves_us;
   const bool revise_verb = has_any(c, {"make", "change", "modify", "let", "have", "get", "set", "put", "place", "position",
                                        "push", "paint", "repaint", "respray", "recolor", "color", "turn",
                                        "move", "speed", "slow", "swap", "replace", "switch", "should", "park", "stop",
@@ -475,13 +478,10 @@ Instruction classify(const Words& c_in) {
     return in;
   }
   // "no, dark green", "actually red please": a colour said alone recolours what was spoken of last.
-  if (bare_color(c)) {
+  if (const auto colour = bare_color(c)) {
     in.kind = "revise";
     in.target = "it";
-    Words colour;
-    for (const auto& x : c)
-      if (!is_filler_word(x)) colour.push_back(x);
-    in.text = "make it " + text::join(colour);
+    in.text = "make it " + *colour;
     return in;
   }
   // "2 m forward", "another 10 degrees left": an amount and a direction with nothing else named

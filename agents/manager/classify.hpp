@@ -1,5 +1,7 @@
 #pragma once
-// What one clause of a command is (classify.cpp): used by the decomposition only.
+// What one clause of a command is (classify.cpp), and the words of references (references.cpp):
+// used inside the manager only.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +22,30 @@ bool says_amount(const std::vector<std::string>& words, bool angles = true);
 // "have a tahoe come from the right" -> "add a tahoe come from the right"; other clauses unchanged
 // (said_as_addition.cpp).
 std::vector<std::string> causative_addition(const std::vector<std::string>& clause);
+// "add a motorbike behind the one that's already there" -> "... behind the motorbike"; other
+// clauses unchanged.
+std::vector<std::string> existing_one(const std::vector<std::string>& clause);
 // "fill the bays", "line the street with parked cars" -> "add a row of parked cars in ..."; other
 // clauses unchanged.
 std::vector<std::string> fill_addition(const std::vector<std::string>& clause);
+
+// "no, dark green", "red instead": a colour said with filler words only, as its words ("dark
+// green"); none for any other clause (bare_clauses.cpp).
+std::optional<std::string> bare_color(const std::vector<std::string>& clause);
+// "slower", "a bit closer", "no, faster": a change of speed or distance said alone, as its words
+// (without "no" or "please"); none for any other clause.
+std::optional<std::string> bare_change(const std::vector<std::string>& clause);
+// "in front of the bendy bus", "no, behind it", "in the bus lane": a place said alone, no verb, as
+// its words (without "no"); none for any other clause.
+std::optional<std::string> bare_place(const std::vector<std::string>& clause);
+
+// "move it behind the van" -> "move behind the van": the words naming the revised vehicle go
+// (references.cpp).
+std::string strip_reference(const std::string& text, const std::string& reference);
+// "put it behind it", "no, in front of it": an "it" after a place word cannot be the vehicle being
+// moved; it is the other one, the vehicle that placed it, said as kOtherVehicle.
+inline constexpr const char* kOtherVehicle = "the other vehicle";
+std::string anchor_as_other(const std::string& text);
 
 // The instruction one clause (its words, lower case, typos corrected) asks for.
 Instruction classify(const std::vector<std::string>& clause);

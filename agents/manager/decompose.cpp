@@ -37,7 +37,7 @@ bool starts_instruction(const std::string& w) {
     if (std::find(list->begin(), list->end(), w) != list->end()) return true;
   static const char* v[] = {"move", "shift", "raise", "lower", "rotate", "turn", "look", "pan", "tilt", "make",
                             "change", "modify", "set", "paint", "repaint", "respray", "recolor", "restore", "undo", "simulate",
-                            "ego", "swap", "replace", "lift", "nudge", "step", "swing", "yaw"};
+                            "ego", "swap", "replace", "lift", "nudge", "step", "swing", "yaw", "send"};
   for (const char* x : v)
     if (w == x) return true;
   return false;
@@ -122,7 +122,9 @@ std::vector<Words> clauses(const Words& w, const std::vector<bool>& comma_before
                                  "would you", "will you", "i want you to", "i would like you to", "i need you to",
                                  "could we have", "can we have", "could we get", "can we get", "could i have",
                                  "can i have", "can i get", "could i get", "we need", "we want", "give me", "show me",
-                                 "id like you to", "i'd like you to", "kindly", "lets", "let us", "go ahead and", "try to"};
+                                 "id like you to", "i'd like you to", "kindly", "lets", "let us", "go ahead and", "try to",
+                                 "no wait", "no sorry", "no actually", "wait no", "hang on", "hold on", "scratch that",
+                                 "on second thought", "on second thoughts", "second thoughts"};
   // Fillers and politeness in any order ("hey, can you ...", "ok so please ..."), until none is left.
   static const char* fillers[] = {"additionally", "also", "then", "now", "please", "and", "finally", "next", "first",
                                   "lastly", "ok", "okay", "actually", "sorry", "wait", "oh", "hmm", "hey", "hi",

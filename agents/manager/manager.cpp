@@ -13,19 +13,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string strip_reference(const std::string& text, const std::string& reference) {
-  std::vector<std::string> w = text::words(text);
-  std::vector<std::string> drop;
-  if (reference == "both" || reference == "them") drop = {"both of them", "all of them", "each of them", "both", "them", "they"};
-  else drop = {reference, "it", "its"};
-  for (const auto& d : drop) {
-    const size_t n = text::words(d).size();
-    for (size_t at = text::find_phrase(w, d); at != std::string::npos; at = text::find_phrase(w, d))
-      w.erase(w.begin() + long(at), w.begin() + long(at + n));
-  }
-  return text::join(w);
-}
-
 // Values the motion agent found out of range refuse the instruction, each with its reason.
 bool refused_for_range(Conversation& c, const std::string& text, const json& intent) {
   if (!intent.contains("problems")) return false;
@@ -170,7 +157,10 @@ void Manager::do_delete(Conversation& c, const Instruction& in, Round& round) {
       return;
     }
   }
-  const auto out = call("deletion", c, "select", {{"instruction", in.text}, {"removed", c.removed}});
+  // "remove the truck", then "and the car behind it": "it" is what was removed last.
+  json args{{"instruction", in.text}, {"removed", c.removed}};
+  if (!c.removal_batches.empty()) args["it"] = c.removal_batches.back();
+  const auto out = call("deletion", c, "select", args);
   if (!out.ok) throw std::runtime_error("deletion agent: " + out.message);
   const auto ids = out.result["ids"].get<std::vector<std::string>>();
   if (ids.empty()) {
@@ -221,9 +211,9 @@ bool Manager::restore_described(Conversation& c, const std::vector<std::string>&
       description.push_back(x);
   const bool describes = !lexicon::find_types(description).empty() || !lexicon::find_colors(description).empty();
   if (!describes) return false;
-  // Selected among every object (the removed ones are the point), then kept if removed.
+  // Selected among the removed objects ("the truck" is the removed one, not the nearest truck).
   const auto out = call("deletion", c, "select", {{"instruction", "remove " + text::join(description)},
-                                                  {"removed", json::array()}});
+                                                  {"among", c.removed}});
   std::vector<std::string> back;
   for (const auto& o : out.ok ? out.result.value("objects", json::array()) : json::array()) {
     const auto id = o.value("id", std::string());
@@ -343,6 +333,7 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
     do_view(c, in, round);
     return;
   }
+  if (replace_recorded(c, in, round)) return;
   const auto targets = resolve(c, in.target);
   if (targets.empty()) {
     c.unresolved.push_back({{"instruction", in.text},
@@ -351,14 +342,19 @@ void Manager::do_revise(Conversation& c, const Instruction& in, Round& round) {
                                                        : "no added vehicle matches '" + in.target + "'"}});
     return;
   }
-  const std::string rest = colours_of_references(c, strip_reference(in.text, in.target));
+  const std::string rest = colours_of_references(c, detail::strip_reference(detail::anchor_as_other(in.text), in.target));
   const auto decided = call("motion", c, "decide", {{"instruction", rest}});
   if (!decided.ok) throw std::runtime_error("motion agent: " + decided.message);
   if (refused_for_range(c, in.text, decided.result["intent"])) return;
-  json said = decided.result["intent"];
+  const json said_all = decided.result["intent"];
   bool changed_any = false;
   for (int t : targets) {
     AddedVehicle& v = c.added[size_t(t)];
+    json said = said_all;
+    // "no wait, in front of it": the vehicle that placed it ("the other vehicle" said, it has one).
+    if (said.contains("relative") && said["relative"].value("to", "") == detail::kOtherVehicle &&
+        v.intent.contains("relative") && v.intent["relative"].value("to", "") != "removed")
+      said["relative"]["to"] = v.intent["relative"]["to"];
     const auto asset = call("asset", c, "choose", {{"instruction", rest}, {"base", v.asset}});
     if (!asset.ok) throw std::runtime_error("asset agent: " + asset.message);
     json req = asset.result["request"];

@@ -94,6 +94,9 @@ class Manager {
                            const std::vector<Instruction>& instructions) const;
   void do_add(Conversation& c, const Instruction& in, Round& round);
   void do_revise(Conversation& c, const Instruction& in, Round& round);
+  // "swap the bendy bus for a double-decker": a recorded vehicle goes and the new one takes its
+  // place; false when the words name no such swap or an added vehicle (replace_recorded.cpp).
+  bool replace_recorded(Conversation& c, const Instruction& in, Round& round);
   bool replan_revised(Conversation& c, int index, const nlohmann::json& said, const std::string& text);
   // "make it four" after two cones: as many of the group as said (group_count.cpp).
   bool revise_count(Conversation& c, const Instruction& in, const std::vector<int>& targets, Round& round);

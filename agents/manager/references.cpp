@@ -4,6 +4,7 @@
 
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
+#include "agents/manager/classify.hpp"
 #include "agents/manager/manager.hpp"
 
 namespace chatsim::agents::manager {
@@ -132,5 +133,37 @@ std::vector<int> Manager::resolve(const Conversation& c, const std::string& refe
   }
   return out;
 }
+
+namespace detail {
+
+std::string strip_reference(const std::string& text, const std::string& reference) {
+  std::vector<std::string> w = text::words(text);
+  std::vector<std::string> drop;
+  if (reference == "both" || reference == "them") drop = {"both of them", "all of them", "each of them", "both", "them", "they"};
+  else drop = {reference, "it", "its"};
+  for (const auto& d : drop) {
+    const size_t n = text::words(d).size();
+    for (size_t at = text::find_phrase(w, d); at != std::string::npos; at = text::find_phrase(w, d))
+      w.erase(w.begin() + long(at), w.begin() + long(at + n));
+  }
+  return text::join(w);
+}
+
+// "put it behind it", "no, in front of it": an "it" after a place word cannot be the vehicle being
+// moved; it is the other one, the vehicle that placed it (do_revise).
+std::string anchor_as_other(const std::string& text) {
+  std::vector<std::string> w = text::words(text);
+  for (const char* place : {"in front of it", "ahead of it", "behind it", "next to it", "beside it", "alongside it",
+                            "past it", "opposite it"})
+    if (const size_t at = text::find_phrase(w, place); at != std::string::npos) {
+      const size_t n = text::words(place).size();
+      w.erase(w.begin() + long(at + n - 1));
+      const auto other = text::words(kOtherVehicle);
+      w.insert(w.begin() + long(at + n - 1), other.begin(), other.end());
+    }
+  return text::join(w);
+}
+
+}  // namespace detail
 
 }  // namespace chatsim::agents::manager

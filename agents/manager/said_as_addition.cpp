@@ -9,9 +9,10 @@ namespace chatsim::agents::manager::detail {
 
 using Words = std::vector<std::string>;
 
-// "have a tahoe come from the right", "let a bus pull out": a new vehicle made to do something.
+// "have a tahoe come from the right", "let a bus pull out", "send a coach through booth 3": a new
+// vehicle made to do something.
 Words causative_addition(const Words& c) {
-  if (c.size() < 3 || (c[0] != "have" && c[0] != "let" && c[0] != "make" && c[0] != "get")) return c;
+  if (c.size() < 3 || (c[0] != "have" && c[0] != "let" && c[0] != "make" && c[0] != "get" && c[0] != "send")) return c;
   if (c[1] != "a" && c[1] != "an" && !(text::is_number_word(c[1]) && c[1] != "half")) return c;
   const auto types = lexicon::find_types(Words(c.begin() + 1, c.end()));
   const auto brands = lexicon::find_brands(Words(c.begin() + 1, c.end()));
@@ -47,6 +48,28 @@ Words fill_addition(const Words& c) {
   out.push_back("in");
   out.insert(out.end(), c.begin() + 1, c.begin() + long(link));
   return out;
+}
+
+// "add a motorbike behind the one that's already there", "a van next to the existing one": the
+// recorded vehicle of the kind being added.
+Words existing_one(const Words& c) {
+  static const char* kPhrases[] = {"the one that is already there", "the one which is already there",
+                                   "the one that already there", "the one thats already there", "the one already there",
+                                   "the one that already in the scene", "the one already in the scene",
+                                   "the existing one", "the one that there", "the one there"};
+  for (const char* phrase : kPhrases) {
+    const size_t at = text::find_phrase(c, phrase);
+    if (at == std::string::npos) continue;
+    const auto types = lexicon::find_types(Words(c.begin(), c.begin() + long(at)));
+    if (types.empty() || types.front().type.living()) return c;
+    Words out(c.begin(), c.begin() + long(at));
+    out.push_back("the");
+    const auto& t = types.front();
+    out.insert(out.end(), c.begin() + long(t.begin), c.begin() + long(t.end));
+    out.insert(out.end(), c.begin() + long(at + text::words(phrase).size()), c.end());
+    return out;
+  }
+  return c;
 }
 
 }  // namespace chatsim::agents::manager::detail

@@ -339,6 +339,10 @@ double arc_where_turned(const Path& path, double from, double degrees) {
   return std::numeric_limits<double>::infinity();
 }
 
+// The time a driver takes to steer through a change of heading (arc_lengths_at).
+constexpr double kSpreadTurnS = 1.0;
+constexpr double kTurnRad = 15.0 * std::numbers::pi / 180;
+
 std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std::vector<double>& times, double a_lat,
                                    double a_long, bool from_rest) {
   std::vector<double> out;
@@ -353,12 +357,32 @@ std::vector<double> arc_lengths_at(const Path& path, double v_desired, const std
   std::vector<double> v(n, v_desired);
   // A straight path (most lane paths) has no bend to slow for: skip sampling its curvature.
   if (!is_straight(path)) {
-    // curvature_at(q) compares the headings 1 m either side: two grid steps. Each heading once.
-    std::vector<double> yaw(n + 4);
-    for (size_t j = 0; j < n + 4; ++j) yaw[j] = path.yaw_at((double(j) - 2) * ds);
+    // The heading change over windows of 2 to 32 m about each point. A driver spreads a slight
+    // change of heading over about a second of travel: a window's curvature binds at the speeds
+    // that cover it in a second or more, so a kink of a few degrees where two straight map
+    // segments meet does not slow it as a bend does.
+    // Turning summed without sign (an S-bend does not cancel out): turned[j] up to grid point j.
+    constexpr int kPad = 32;  // grid steps of the longest half-window (16 m)
+    std::vector<double> turned(n + 2 * kPad, 0.0);
+    double last_yaw = path.yaw_at(-kPad * ds);
+    for (size_t j = 1; j < turned.size(); ++j) {
+      const double yaw = path.yaw_at((double(j) - kPad) * ds);
+      turned[j] = turned[j - 1] + std::abs(wrap(yaw - last_yaw));
+      last_yaw = yaw;
+    }
     for (size_t i = 0; i < n; ++i) {
-      const double k = std::abs(wrap(yaw[i + 4] - yaw[i])) / 2;
-      v[i] = std::min(v_desired, k > 1e-6 ? std::sqrt(a_lat / k) : v_desired);
+      double limit = 0;
+      for (const int half : {2, 4, 8, 16, 32}) {  // grid steps: windows of 2, 4, 8, 16, 32 m
+        const double window = 2 * half * ds;
+        const double k = (turned[i + kPad + size_t(half)] - turned[i + kPad - size_t(half)]) / window;
+        const double v_window = k > 1e-6 ? std::sqrt(a_lat / k) : v_desired;
+        if (half == 2 || v_window >= window / kSpreadTurnS) limit = std::max(limit, v_window);
+        if (limit >= v_desired) break;
+        // A turn (15 degrees or more within 32 m) is driven by its tightest 2 m: only slight
+        // bends and kinks are spread out.
+        if (half == 2 && turned[i + 2 * kPad] - turned[i] >= kTurnRad) break;
+      }
+      v[i] = std::min(v_desired, limit);
     }
   }
   if (from_rest) v[0] = 0;

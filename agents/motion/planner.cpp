@@ -138,6 +138,10 @@ Planner::Planner(const scene::Scene& scene, const PlanRequest& req) : scene_(sce
     }
   // "in the bus lane": the map's lanes of that use; a map without one leaves the start free.
   if (m_.lane_use) use_lanes_ = language::lanes_for_use(scene, *m_.lane_use);
+  // A bus lane is for buses (and a cycle lane for bicycles): others keep out unless told.
+  for (const char* use : {"bus", "tram", "cycle"})
+    if (!m_.lane_use && !(std::string(use) == "bus" && req.type == "bus"))
+      for (int l : language::lanes_for_use(scene.lanes, use)) reserved_lanes_.push_back(l);
   if (m_.junction) junction_ = scene.lanes.junction_ahead(ego_.p, ego_.yaw);
   const auto ego_lane = scene.lanes.containing(ego_.p);
   for (const auto& l : ego_lane)

@@ -106,7 +106,8 @@ bool Planner::same_way_as_ego(int lane, double s) const {
 
 double Planner::lane_hint_penalty(int lane, double s, int dir) const {
   const bool off_use = !use_lanes_.empty() && std::find(use_lanes_.begin(), use_lanes_.end(), lane) == use_lanes_.end();
-  return (off_use ? 60 : 0) + said_lane_penalty(lane, s, dir);
+  const bool reserved = std::find(reserved_lanes_.begin(), reserved_lanes_.end(), lane) != reserved_lanes_.end();
+  return (off_use ? 60 : 0) + (reserved ? 20 : 0) + said_lane_penalty(lane, s, dir);
 }
 
 std::string Planner::lane_said() const {

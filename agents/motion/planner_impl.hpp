@@ -16,6 +16,9 @@ constexpr double kPi = std::numbers::pi;
 // Score a start loses for being held up behind traffic: all of it lost weighs as much as a
 // start 30 m from the distance asked for.
 constexpr double kSlowPenalty = 30.0;
+// A start further from its anchor than the distance said: worse than the most a wait behind
+// traffic costs (4 kSlowPenalty for a speed said).
+constexpr double kDistanceMissedPenalty = 4 * kSlowPenalty;
 // Clearance kept from every other box (each side): recorded vehicles pass a kerbside cone at
 // less than half a metre.
 constexpr double kClearanceM = 0.15;
@@ -178,6 +181,7 @@ class Planner {
   double ego_speed_ = 0;              // the ego's mean recorded speed over the clip, m/s
   std::vector<bool> lane_beside_;     // "the left/right lane": a same-way lane beside each lane, that side
   std::vector<int> use_lanes_;        // "the bus lane": the lanes of the use said (lane_names.hpp)
+  std::vector<int> reserved_lanes_;   // bus, tram and cycle lanes this vehicle may not use unless told
   std::optional<scene::LaneMap::JunctionSpan> junction_;  // "past the junction": the first one ahead
   std::vector<bool> branch_;          // with "the left/right lane": each lane a pocket or a ramp
   int oncoming_side_ = 0;             // with "the oncoming lane": its side of the ego (+1 left), 0 none

@@ -8,8 +8,12 @@ namespace chatsim::agents::motion::detail {
 std::vector<std::pair<double, double>> Planner::gaps_from_anchor(double base_gap, double headway) const {
   std::vector<std::pair<double, double>> out;
   if (m_.distance_m) {
-    const double want = std::max(*m_.distance_m, base_gap);
-    for (double gap = base_gap; gap < want + 45; gap += 0.5) out.push_back({gap, std::abs(gap - want)});
+    // A distance said holds as one from the ego does (within max(3 m, 20 %)): a speed said too
+    // ("doing 40 km/h 10 m behind the black car") makes it follow, not start further back. Outside
+    // that, only when nothing inside is free.
+    const double want = std::max(*m_.distance_m, base_gap), tol = std::max(3.0, 0.2 * want);
+    for (double gap = base_gap; gap < want + 45; gap += 0.5)
+      out.push_back({gap, std::abs(gap - want) + (std::abs(gap - want) > tol ? kDistanceMissedPenalty : 0.0)});
     return out;
   }
   for (double gap = base_gap + headway; gap < base_gap + headway + 45; gap += 0.5)

@@ -128,3 +128,22 @@ TEST(MotionPath, PursuitStaysOnABendAtAnySpeed) {
     EXPECT_LT(worst, 1.0) << speed << " m/s";
   }
 }
+
+TEST(MotionPath, AKinkWhereTwoStraightSegmentsMeetDoesNotSlowLikeABend) {
+  // Two straight map segments meeting at 5 degrees (a lane shifting over by a metre or two), driven
+  // at 22 m/s: a driver takes that kink within a second, as on a straight; a bend of the same
+  // heading change squeezed into 2 m would allow about 12 m/s (bend_accel's hurried 6 m/s^2).
+  const auto times = clip_times(6);
+  const auto kinked = [](double degrees) {  // 60 m along +x, then 100 m turned by `degrees` at once
+    Path p;
+    for (double x = 0; x <= 60; x += 0.5) p.push({x, 0});
+    const double a = degrees * kPi / 180;
+    for (double d = 0.5; d <= 100; d += 0.5) p.push({60 + d * std::cos(a), d * std::sin(a)});
+    return p;
+  };
+  const auto arc = arc_lengths_at(kinked(5), 22, times, 6.0);
+  EXPECT_GT((arc.back() - arc.front()) / 6.0, 21.0);
+  // A 15 degree turn is driven by its tightest 2 m, as before: the same kink three times as sharp.
+  const auto slowed = arc_lengths_at(kinked(15), 22, times, 6.0);
+  EXPECT_LT((slowed.back() - slowed.front()) / 6.0, 18.0);
+}
