@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "agents/language/lane_names.hpp"
+
 namespace chatsim::agents::motion::detail {
 
 EgoFrame ego_frame(const scene::Scene& scene) {
@@ -111,7 +113,11 @@ double Planner::lane_hint_penalty(int lane, double s, int dir) const {
 }
 
 std::string Planner::lane_said() const {
-  if (m_.lane_use && !use_lanes_.empty()) return *m_.lane_use;
+  if (m_.lane_use && !use_lanes_.empty()) {  // as the user says it: "bus", "booth 3" (messages add " lane")
+    std::string said = language::use_words(*m_.lane_use);
+    if (said.ends_with(" lane")) said.resize(said.size() - 5);
+    return said;
+  }
   return m_.lane.value_or(m_.lane_edge.value_or(""));
 }
 

@@ -61,6 +61,10 @@ TEST(SaidAtTheBusway, PlacesTheMapSpellsOtherwiseAndOrdinalPlaces) {
   EXPECT_EQ(through->use, "place:booth#3");
   // Of the two trucks, the one with a car queuing behind it.
   EXPECT_EQ(removed_ids(plaza("b", "delete the car queuing behind the truck")), (Ids{"obj_3"}));
+  // A distance from a vehicle that traffic leaves no room at: it goes further, and says so (the
+  // truck stands 3.5 m in front of the blue car).
+  const auto notes = plaza("d", "add a car 5 m in front of the blue car")["notes"].dump();
+  EXPECT_NE(notes.find("nothing was free 5.0 m from the blue car"), std::string::npos) << notes;
   // "The toll booth attendant" is a person; "a guy on a motorbike" is the motorbike.
   EXPECT_EQ(removed_ids(plaza("c", "erase the toll booth attendant")), (Ids{"obj_8"}));
   const auto rider = lexicon::find_types(text::words("add a guy on a motorbike"));
