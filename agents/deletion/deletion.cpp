@@ -48,8 +48,6 @@ std::vector<Words> phrases(const Words& w, size_t begin, size_t end) {
   return out;
 }
 
-int ordinal(const std::string& w) { return text::ordinal_value(w); }
-
 // "the tractor": an English noun the interpreter does not know where the thing to delete is
 // named; nothing in a scene is one, so the request is refused rather than guessed.
 std::optional<std::string> unknown_head(const Words& said) {
@@ -189,7 +187,7 @@ void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention
     s.quantity = "one";
   }
   for (size_t i = 0; i < p.size(); ++i)
-    if (int k = ordinal(p[i])) {
+    if (int k = text::ordinal_value(p[i])) {
       s.nth = k;
       if (!s.order) s.order = "nearest";
       s.quantity = "one";

@@ -242,15 +242,17 @@ void keep_beyond(const Selector& t, const scene::Scene& scene, std::vector<const
   if (!t.beyond_use || scene.frames.empty()) return;
   const auto lanes = language::lanes_for_use(scene, *t.beyond_use);
   const Eigen::Vector2d ego = scene.frames.front().ego_to_world.translation().head<2>();
+  std::vector<double> ego_lateral;  // the ego's side of each lane, once
+  for (const int l : lanes) ego_lateral.push_back(scene.lanes.project(l, ego).lateral);
   std::erase_if(m, [&](const Candidate* c) {
     const Eigen::Vector2d p = c->object->track.front().center.head<2>();
     int beside = 0;
-    for (const int l : lanes) {
-      const auto& lane = scene.lanes.lanes()[size_t(l)];
-      const auto at = scene.lanes.project(l, p);
+    for (size_t i = 0; i < lanes.size(); ++i) {
+      const auto& lane = scene.lanes.lanes()[size_t(lanes[i])];
+      const auto at = scene.lanes.project(lanes[i], p);
       if (at.s <= 0 || at.s >= lane.length()) continue;
       ++beside;
-      if (at.lateral * scene.lanes.project(l, ego).lateral >= 0 || std::abs(at.lateral) < lane.width / 2) return true;
+      if (at.lateral * ego_lateral[i] >= 0 || std::abs(at.lateral) < lane.width / 2) return true;
     }
     return beside == 0;
   });

@@ -76,18 +76,18 @@ bool says_where(const std::string& w) {
 
 }  // namespace
 
-std::string use_words(const std::string& use) {
+std::string use_words(const std::string& use, bool lane_word) {
   if (use.starts_with("place:")) {
     std::string out = use.substr(6);
     if (const size_t hash = out.find('#'); hash != std::string::npos) out[hash] = ' ';
     return out;
   }
-  if (use == "turn_left" || use == "turn_right") return use.substr(5) + "-turn lane";
+  if (use == "turn_left" || use == "turn_right") return use.substr(5) + (lane_word ? "-turn lane" : "-turn");
   std::string out = use;
   std::replace(out.begin(), out.end(), '_', ' ');
   const bool a_lane = std::any_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return use == r.role; }) ||
                       use.starts_with("turn") || use == "closed";
-  return a_lane ? out + " lane" : out;
+  return a_lane && lane_word ? out + " lane" : out;
 }
 
 bool is_known_use(const std::string& use) {

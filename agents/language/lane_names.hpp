@@ -23,8 +23,9 @@ struct LaneName {
   size_t end = 0;
 };
 
-// A use as a user would say it, for messages: "bus lane", "car park", "pump 2", "busway".
-std::string use_words(const std::string& use);
+// A use as a user would say it, for messages: "bus lane", "car park", "pump 2"; without
+// `lane_word`, "bus", "left-turn".
+std::string use_words(const std::string& use, bool lane_word = true);
 
 // Whether a use is one of the interpreter's own (bus, turn..., cycle, ego_turn, ...), as opposed
 // to a word of the map's ("service", "dropoff") that only the map's lane ids can give a meaning.

@@ -19,8 +19,7 @@ namespace {
 // "cars", "vehicles" or "traffic": those are the usual mix).
 std::optional<std::string> said_kind(const std::string& text) {
   for (const auto& t : lexicon::find_types(text::words(text)))
-    if (t.type.addable() && t.type.type != "car" && t.type.type != "cone" && t.type.type != "barrier" &&
-        t.type.type != "vehicle")
+    if (t.type.addable() && t.type.type != "car" && t.type.type != "cone" && t.type.type != "barrier")
       return t.type.type;
   return std::nullopt;
 }

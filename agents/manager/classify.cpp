@@ -41,6 +41,15 @@ bool says_amount(const Words& w, bool angles) {
 
 namespace {
 
+// A correction said without a verb, as the revision of what was spoken of last.
+Instruction revises_last(const std::string& text) {
+  Instruction in;
+  in.kind = "revise";
+  in.target = "it";
+  in.text = text;
+  return in;
+}
+
 bool refers_to_added(const Words& w_in) {
   // "leave the bus where it is": that "it" is the bus, not something added.
   Words w = w_in;
@@ -413,18 +422,8 @@ Instruction classify(const Words& c_in) {
   in.text = text::join(c);
   // "slower", "a bit closer", "in front of the bendy bus", "behind it": a change or a place said
   // alone revises what was spoken of last.
-  if (const auto change = bare_change(c)) {
-    in.kind = "revise";
-    in.target = "it";
-    in.text = "make it " + *change;
-    return in;
-  }
-  if (const auto place = bare_place(c)) {
-    in.kind = "revise";
-    in.target = "it";
-    in.text = "put it " + *place;
-    return in;
-  }
+  if (const auto change = bare_change(c)) return revises_last("make it " + *change);
+  if (const auto place = bare_place(c)) return revises_last("put it " + *place);
   const bool vehicle = mentions_vehicle(c);
   const bool added_ref = refers_to_added(c);
   if (classify_deletion(c, vehicle, added_ref, in) || classify_addition(c, vehicle, in)) return in;
@@ -478,12 +477,7 @@ Instruction classify(const Words& c_in) {
     return in;
   }
   // "no, dark green", "actually red please": a colour said alone recolours what was spoken of last.
-  if (const auto colour = bare_color(c)) {
-    in.kind = "revise";
-    in.target = "it";
-    in.text = "make it " + *colour;
-    return in;
-  }
+  if (const auto colour = bare_color(c)) return revises_last("make it " + *colour);
   // "2 m forward", "another 10 degrees left": an amount and a direction with nothing else named
   // moves the view.
   if (has_amount && has_any(c, {"forward", "ahead", "back", "backward", "left", "right", "up", "down", "higher", "lower"})) {

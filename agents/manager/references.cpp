@@ -155,12 +155,8 @@ std::string anchor_as_other(const std::string& text) {
   std::vector<std::string> w = text::words(text);
   for (const char* place : {"in front of it", "ahead of it", "behind it", "next to it", "beside it", "alongside it",
                             "past it", "opposite it"})
-    if (const size_t at = text::find_phrase(w, place); at != std::string::npos) {
-      const size_t n = text::words(place).size();
-      w.erase(w.begin() + long(at + n - 1));
-      const auto other = text::words(kOtherVehicle);
-      w.insert(w.begin() + long(at + n - 1), other.begin(), other.end());
-    }
+    if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
+      w[at + text::words(place).size() - 1] = kOtherVehicle;  // joined back into words below
   return text::join(w);
 }
 

@@ -237,14 +237,15 @@ bool find_distance(const Words& w, MotionIntent& m) {
     }
   // "a bit closer", "much further away", with no amount: a third nearer or farther (two thirds
   // "much" or "a lot"), of the distance it has.
+  const auto amounts = text::quantities(w, text::length_units());
   const bool nearer = has_any(w, {"closer", "nearer"}), farther = has_any(w, {"further", "farther"});
-  if ((nearer || farther) && text::quantities(w, text::length_units()).empty() && !m.relative &&
+  if ((nearer || farther) && amounts.empty() && !m.relative &&
       !has_any(w, {"closer to", "nearer to", "further from", "farther from"})) {
     const bool much = has_any(w, {"much", "a lot", "way", "lot"});
     m.distance_factor = nearer ? (much ? 1.0 / 3 : 2.0 / 3) : (much ? 5.0 / 3 : 4.0 / 3);
     return false;
   }
-  for (const auto& q : text::quantities(w, text::length_units())) {
+  for (const auto& q : amounts) {
     // "50 kilometers per hour" is a speed (find_speed), not a distance.
     if (q.end < w.size() && (w[q.end] == "per" || w[q.end] == "an" || w[q.end] == "a")) continue;
     const double d = q.value * text::meters_per(q.unit).value_or(1.0);

@@ -324,11 +324,11 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
   // "20 m ahead of the van" where traffic leaves no room there: say how far it is instead.
   if (m_.relative && m_.distance_m && req_.anchor &&
       (m_.relative->region == "front" || m_.relative->region == "back" || m_.relative->region == "beyond")) {
-    // As gaps_from_anchor reads it: centre to centre, and never closer than bumper to bumper + 2 m.
-    const double want = std::max(*m_.distance_m, (req_.anchor->size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0);
+    // As gaps_from_anchor reads it: centre to centre, never closer than anchor_base_gap.
+    const double want = std::max(*m_.distance_m, anchor_base_gap());
     const double got = (Eigen::Vector2d(e.poses.front().x, e.poses.front().y) -
                         Eigen::Vector2d(req_.anchor->start.x, req_.anchor->start.y)).norm();
-    if (got > want + std::max(3.0, 0.2 * want))
+    if (got > want + distance_tolerance(want))
       result.notes.push_back("nothing was free " + fmt(*m_.distance_m) + " m from " + m_.relative->to + "; it starts " +
                              fmt(got) + " m from it");
   }

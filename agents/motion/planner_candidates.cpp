@@ -53,7 +53,7 @@ Region region_for(const std::string& placement, const MotionIntent& m, double wi
   }
   r.d_pref = m.distance_m.value_or(d_default);
   if (m.distance_m) {
-    const double tol = std::max(3.0, 0.2 * *m.distance_m) * widen;
+    const double tol = distance_tolerance(*m.distance_m) * widen;
     r.d_min = std::max(0.5, *m.distance_m - tol);
     r.d_max = *m.distance_m + tol;
   }
@@ -113,11 +113,8 @@ double Planner::lane_hint_penalty(int lane, double s, int dir) const {
 }
 
 std::string Planner::lane_said() const {
-  if (m_.lane_use && !use_lanes_.empty()) {  // as the user says it: "bus", "booth 3" (messages add " lane")
-    std::string said = language::use_words(*m_.lane_use);
-    if (said.ends_with(" lane")) said.resize(said.size() - 5);
-    return said;
-  }
+  // As the user says it: "bus", "booth 3" (the messages add " lane").
+  if (m_.lane_use && !use_lanes_.empty()) return language::use_words(*m_.lane_use, false);
   return m_.lane.value_or(m_.lane_edge.value_or(""));
 }
 
@@ -235,7 +232,7 @@ void Planner::place_by_junction(const std::string& placement, double widen, Regi
   const bool after = *m_.junction == "after";
   const double edge = after ? junction_->to + 5 : junction_->from - 5;
   const double d = m_.distance_m.value_or(8.0);
-  const double tol = m_.distance_m ? std::max(3.0, 0.2 * d) * widen : 1e9;
+  const double tol = m_.distance_m ? distance_tolerance(d) * widen : 1e9;
   region.d_pref = after ? edge + d : std::max(1.0, edge - d);
   region.d_min = after ? std::max(edge, region.d_pref - tol) : std::max(0.5, region.d_pref - tol);
   region.d_max = after ? region.d_pref + std::min(tol, 60.0 * widen) : std::min(edge, region.d_pref + tol);
@@ -380,7 +377,7 @@ std::vector<Candidate> Planner::relative_candidates() const {
     return out;
   }
   if (lane < 0) return out;
-  const double base_gap = (a.size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0;
+  const double base_gap = anchor_base_gap();
   if (region == "at") {  // in its place: the anchor's own stretch of lane
     const bool parked = wants_parked(scene_.lanes.lanes()[size_t(lane)].for_stopping()) ||
                         (a.speed_mps < 0.5 && nothing_said_about_motion());

@@ -2,6 +2,7 @@
 // The motion planner's insides (not an API): planner.cpp searches the starts and answers,
 // planner_candidates.cpp says where a vehicle may start, planner_evaluate.cpp how it drives
 // from there (path, speed, car following, overtaking, collisions).
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ constexpr double kSlowPenalty = 30.0;
 // A start further from its anchor than the distance said: worse than the most a wait behind
 // traffic costs (4 kSlowPenalty for a speed said).
 constexpr double kDistanceMissedPenalty = 4 * kSlowPenalty;
+// How far a start may be from a distance said ("20 m ahead", "20 m behind the van") and still be
+// that distance.
+inline double distance_tolerance(double said_m) { return std::max(3.0, 0.2 * said_m); }
 // Clearance kept from every other box (each side): recorded vehicles pass a kerbside cone at
 // less than half a metre.
 constexpr double kClearanceM = 0.15;
@@ -131,6 +135,8 @@ class Planner {
   // Centre-to-centre gaps to try ahead of or behind the anchor, each with its cost: near the
   // distance said ("20 m ahead of the van"), else as close as a headway allows.
   std::vector<std::pair<double, double>> gaps_from_anchor(double base_gap, double headway) const;
+  // The closest a start may be to the anchor, centre to centre: bumper to bumper plus 2 m.
+  double anchor_base_gap() const;
   double desired_speed(bool parked) const;
   Evaluated evaluate(const Candidate& c) const;
   Evaluated evaluate_at(const Candidate& c, double speed, double wait_s = 0, int join_side = 0) const;

@@ -5,13 +5,15 @@
 // Placements relative to a vehicle that are not simply ahead of or behind it on its lane.
 namespace chatsim::agents::motion::detail {
 
+double Planner::anchor_base_gap() const { return (req_.anchor->size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0; }
+
 std::vector<std::pair<double, double>> Planner::gaps_from_anchor(double base_gap, double headway) const {
   std::vector<std::pair<double, double>> out;
   if (m_.distance_m) {
     // A distance said holds as one from the ego does (within max(3 m, 20 %)): a speed said too
     // ("doing 40 km/h 10 m behind the black car") makes it follow, not start further back. Outside
     // that, only when nothing inside is free.
-    const double want = std::max(*m_.distance_m, base_gap), tol = std::max(3.0, 0.2 * want);
+    const double want = std::max(*m_.distance_m, base_gap), tol = distance_tolerance(want);
     for (double gap = base_gap; gap < want + 45; gap += 0.5)
       out.push_back({gap, std::abs(gap - want) + (std::abs(gap - want) > tol ? kDistanceMissedPenalty : 0.0)});
     return out;
@@ -27,7 +29,7 @@ std::vector<std::pair<double, double>> Planner::gaps_from_anchor(double base_gap
 void Planner::beyond_candidates(int lane, double s0, int dir, std::vector<Candidate>& out) const {
   const Anchor& a = *req_.anchor;
   const Eigen::Vector2d ap(a.start.x, a.start.y);
-  const double base_gap = (a.size_lwh.x() + req_.size_lwh.x()) / 2 + 2.0;
+  const double base_gap = anchor_base_gap();
   const double headway = a.speed_mps > 0.5 ? std::min(a.speed_mps * 1.0, 20.0) : 0.0;
   const auto along = [&](int li, double s_at, int d, double extra) {
     const auto& l = scene_.lanes.lanes()[size_t(li)];
