@@ -22,6 +22,7 @@ import layouts_v26
 import layouts_v27
 import layouts_v28
 import layouts_v29
+import layouts_v30
 import more_layouts
 from layout_lib import SIZES, frange, lane, line, obj, offset, sample, static, track_along, write
 
@@ -418,3 +419,4 @@ if __name__ == "__main__":
     layouts_v27.main()
     layouts_v28.main()
     layouts_v29.main()
+    layouts_v30.main()
