@@ -107,7 +107,23 @@ std::string action_of(const Track& t) {
   return "other";
 }
 
-bool action_is(const Track& t, const std::string& a) {
+// Whether a track keeps to the one driving lane it starts on, its way, to the end: on a road that
+// bends (a real recording's, a drive-thru's loop) that is driving straight on.
+bool keeps_to_its_lane(const scene::Scene& s, const Track& t) {
+  const auto& map = s.lanes;
+  for (const auto& pos : map.containing(t.p.front(), 0.5)) {
+    const auto& lane = map.lanes()[size_t(pos.lane)];
+    if (lane.type != "driving" || std::cos(map.travel_yaw_at(pos.lane, pos.s) - t.yaw.front()) < 0.7) continue;
+    const bool stays = std::all_of(t.p.begin(), t.p.end(), [&](const Eigen::Vector2d& p) {
+      const auto on = map.project(pos.lane, p);
+      return std::abs(on.lateral) <= lane.width / 2 + 0.5 && on.s >= -1 && on.s <= lane.length() + 1;
+    });
+    if (stays) return true;
+  }
+  return false;
+}
+
+bool action_is(const scene::Scene& s, const Track& t, const std::string& a) {
   if (a == "static") return max_speed(t) < 0.5;
   if (a == "backward") {
     const Eigen::Vector2d d = t.p.back() - t.p.front();
@@ -116,7 +132,7 @@ bool action_is(const Track& t, const std::string& a) {
   const double turn = heading_change(t);
   if (a == "turn_left") return turn > 45;
   if (a == "turn_right") return turn < -45;
-  if (a == "straight") return std::abs(turn) < 20 && max_abs_lateral(t) < 1.5;
+  if (a == "straight") return (std::abs(turn) < 20 && max_abs_lateral(t) < 1.5) || keeps_to_its_lane(s, t);
   if (a == "lane_change_left" || a == "lane_change_right") {
     const double lat = final_lateral(t);
     const double yaw_end = wrap(t.yaw.back() - t.yaw.front()) * kDeg;
@@ -254,7 +270,7 @@ std::string check_added(const scene::Scene& s, const json& added, const json& c)
     const double kmh = mean_speed(t) * 3.6;
     if (kmh < c["speed_kmh"][0].get<double>() || kmh > c["speed_kmh"][1].get<double>()) return "km/h " + std::to_string(kmh);
   }
-  if (c.contains("action") && !action_is(t, c["action"])) return "action looks like " + action_of(t);
+  if (c.contains("action") && !action_is(s, t, c["action"])) return "action looks like " + action_of(t);
   if (c.contains("wrong_way") && wrong_way(s, t) != c["wrong_way"].get<bool>()) return "wrong_way mismatch";
   if (c.contains("on_lane") && c["on_lane"].get<bool>() && !on_lane(s, t)) return "leaves the lanes";
   return "";
@@ -366,13 +382,17 @@ MotionQuality motion_quality(const scene::Scene& s, const json& state) {
   size_t first_added = 0;
   const auto all = vehicles_of(s, state, &first_added);
   for (size_t a = first_added; a < all.size(); ++a) q.no_overlap += first_meeting(all, a, 0).empty() ? 1 : 0;
+  auto with_ego = all;
+  with_ego.push_back(agents::motion::ego_obstacle(s));
+  for (size_t a = first_added; a < all.size(); ++a)
+    q.clear_of_ego += first_meeting(with_ego, a, with_ego.size() - 1).empty() ? 1 : 0;
   for (const auto& v : state.value("added", json::array())) {
     const Track t = track_of(v);
     if (t.p.empty()) continue;
     ++q.vehicles;
     q.on_lane += on_lane(s, t) ? 1 : 0;
     const json intent = v.value("intent", json::object());
-    q.action_match += action_is(t, intent.value("action", "straight")) ? 1 : 0;
+    q.action_match += action_is(s, t, intent.value("action", "straight")) ? 1 : 0;
     const std::string speed = intent.value("speed", "normal");
     bool ok = speed_is(t, speed);
     if (intent.contains("speed_mps") && speed != "static") ok = std::abs(mean_speed(t) - intent["speed_mps"].get<double>()) < 0.25 * intent["speed_mps"].get<double>() + 0.5;

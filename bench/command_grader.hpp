@@ -27,6 +27,7 @@ struct MotionQuality {
   int action_match = 0;
   int speed_match = 0;
   int no_overlap = 0;   // meets no other vehicle (labelled and kept, or added) at any frame
+  int clear_of_ego = 0; // never where the recording car is (its recorded path cannot give way)
 };
 MotionQuality motion_quality(const scene::Scene& scene, const nlohmann::json& edit_state);
 

@@ -36,7 +36,8 @@ AssetRequest parse_asset(const std::string& instruction) {
   size_t rel = text::find_any(w, {"toward the", "near the", "where the", "instead of the", "in place of the",
                                   "between the", "between two", "among the", "overtake the", "overtakes the",
                                   "overtaking the", "pass the", "passing the", "like the", "same as the",
-                                  "same color as", "same shade as", "same size as", "same type as"});
+                                  "same color as", "same shade as", "same size as", "same type as", "as fast as",
+                                  "as quick as", "as quickly as", "as slow as", "as slowly as", "speed of", "speed as"});
   for (const auto& r : lexicon::relation_phrases())
     for (size_t at = text::find_words(w, r.words); at != std::string::npos; at = text::find_words(w, r.words, at + 1)) {
       const size_t next = at + r.words.size();

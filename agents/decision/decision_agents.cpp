@@ -163,6 +163,7 @@ class MotionAgent : public DecisionAgent {
     // "the ego drives slowly" then "a truck ahead at the same speed": the speed the view gives it.
     if (const auto ego = a.value("ego_motion", std::string("none")); ego != "none") req.ego_speed_mps = view::ego_speed_mps(ego);
     req.obstacles = motion::scene_obstacles(*scene, a.value("removed", std::vector<std::string>{}));
+    if (a.value("ego_motion", std::string("none")) == "none") req.ego = motion::ego_obstacle(*scene);
     for (const auto& o : a.value("others", json::array())) {
       std::vector<motion::Pose2> traj;
       for (const auto& p : o.at("trajectory")) traj.push_back({p.at("x"), p.at("y"), p.at("yaw")});

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "agents/deletion/lane_relation.hpp"
+#include "agents/deletion/queue_phrases.hpp"
 #include "agents/language/lane_names.hpp"
 #include "agents/language/lexicon.hpp"
 #include "agents/language/text.hpp"
@@ -214,24 +215,9 @@ void read_order_and_count(const Words& p, const std::vector<lexicon::TypeMention
   }
 }
 
-// "the taxi at the front of the queue", "the car at the back of the line": the one with none of
-// the others just ahead of it (or behind it), not one in front of the ego.
-bool queue_end(Words& p, Selector& s) {
-  for (size_t at = 0; at + 3 < p.size(); ++at) {
-    const bool head = text::has_any({p[at]}, {"front", "head"});
-    if ((!head && !text::has_any({p[at]}, {"back", "end", "rear", "tail"})) || p[at + 1] != "of" ||
-        p[at + 2] != "the" || !text::has_any({p[at + 3]}, {"queue", "line", "row"}))
-      continue;
-    s.order = head ? "queue_head" : "queue_tail";
-    s.quantity = "one";
-    for (size_t k = at; k < at + 3; ++k) p[k] = "_";  // "queue" stays: it says they wait
-    return true;
-  }
-  return false;
-}
-
-Selector parse_phrase(const Words& said, const Selector* previous) {
+Selector parse_phrase(const Words& said_in, const Selector* previous) {
   Selector s;
+  const Words said = detail::queue_place_first(said_in);
   // "the bike in the bus lane", "the left-turn lane": a lane named by its use; its words say
   // neither what the object is nor on which side it stands.
   Words p = said;
@@ -261,6 +247,9 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
     s.noun = previous->noun;
   } else {
     s.noun = "vehicle";  // nothing named: any vehicle (not a preference for cars)
+    // "remove the queue at the barrier": every vehicle in it.
+    if (text::has_any(p, {"queue", "queues", "tailback"}) && !text::has_any(p, {"front", "head", "back", "end", "tail"}))
+      s.quantity = "all";
   }
   if (!s.category.empty() || previous == nullptr) {
     if (s.category.empty() && text::has_any(p, {"ones", "those"})) s.category = "vehicle";  // "the red ones"
@@ -309,7 +298,7 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
   // "the left lane" names a lane, not a side: the side words only count outside a lane phrase.
   const bool side_is_lane = s.lane == "left" || s.lane == "right";
   if (s.of_previous) {
-  } else if (queue_end(p, s)) {
+  } else if (detail::queue_end(p, s)) {
   } else if (text::has_any(p, {"in front", "ahead", "front"})) s.region = "front";
   else if (text::has_any(p, {"behind", "back", "rear"})) s.region = "back";
   else if (!side_is_lane && text::has_any(p, {"left"})) s.region = "left";
@@ -324,7 +313,8 @@ Selector parse_phrase(const Words& said, const Selector* previous) {
                              "going backwards", "going backward"}))
     s.reversing = true;  // it may stand for most of the clip: moving on the whole says little
   else if (text::has_any(p, {"moving", "driving", "in motion", "traveling", "travelling", "pulling out", "pulling away",
-                             "leaving", "exiting", "driving out", "coming out"}))
+                             "leaving", "exiting", "driving out", "coming out", "drives", "passes", "goes past",
+                             "goes by", "comes past", "comes by", "passing by", "drives by"}))
     s.moving = true;
   // "the row of bays on the left", "the cars in the spaces": what stands in a bay is parked.
   s.parked = text::has_any(p, {"parked", "parking", "bay", "bays", "spaces", "spots", "parking space"});

@@ -99,16 +99,24 @@ void narrow_to(std::vector<const Candidate*>& m, Keep keep) {
 }
 
 // The front (or back) of a queue: those with none of the others within 12 m ahead of them (or
-// behind), within 2 m to the side, along their heading.
+// behind), within 2 m to the side, along their heading. A vehicle standing alone is no queue
+// while some stand in one.
 void keep_queue_ends(bool head, std::vector<const Candidate*>& m) {
+  const auto next_in_line = [](const Candidate* c, const Candidate* o, int way) {
+    const Eigen::Vector2d fwd(std::cos(c->yaw), std::sin(c->yaw));
+    const Eigen::Vector2d d = o->pe - c->pe;
+    const double along = fwd.dot(d), side = std::abs(fwd.x() * d.y() - fwd.y() * d.x());
+    return o != c && side < 2.0 && along * way > 0 && std::abs(along) < 12.0;
+  };
   const auto all = m;
   narrow_to(m, [&](const Candidate* c) {
-    const Eigen::Vector2d fwd(std::cos(c->yaw), std::sin(c->yaw));
-    return std::none_of(all.begin(), all.end(), [&](const Candidate* o) {
-      const Eigen::Vector2d d = o->pe - c->pe;
-      const double along = fwd.dot(d), side = std::abs(fwd.x() * d.y() - fwd.y() * d.x());
-      return o != c && side < 2.0 && (head ? along > 0 : along < 0) && std::abs(along) < 12.0;
-    });
+    return std::any_of(all.begin(), all.end(),
+                       [&](const Candidate* o) { return next_in_line(c, o, 1) || next_in_line(c, o, -1); });
+  });
+  const auto queued = m;
+  narrow_to(m, [&](const Candidate* c) {
+    return std::none_of(queued.begin(), queued.end(),
+                        [&](const Candidate* o) { return next_in_line(c, o, head ? 1 : -1); });
   });
 }
 
@@ -212,10 +220,28 @@ void prefer_said_kind(const Selector& t, std::vector<const Candidate*>& m) {
     });
 }
 
+// "the cars waiting at the level crossing": within 25 m of where a railway crosses the road, and
+// the queue behind them (each within 12 m of one kept). A map with no railway narrows nothing.
+void keep_at_rail_crossing(const scene::Scene& scene, std::vector<const Candidate*>& m) {
+  const auto points = language::rail_crossings(scene.lanes);
+  if (points.empty()) return;
+  const auto start = [](const Candidate* c) { return Eigen::Vector2d(c->object->track.front().center.head<2>()); };
+  std::vector<const Candidate*> kept;
+  for (const Candidate* c : m)
+    if (std::any_of(points.begin(), points.end(), [&](const Eigen::Vector2d& p) { return (start(c) - p).norm() < 25; }))
+      kept.push_back(c);
+  for (size_t k = 0; k < kept.size(); ++k)
+    for (const Candidate* c : m)
+      if (std::find(kept.begin(), kept.end(), c) == kept.end() && (start(c) - start(kept[k])).norm() < 12)
+        kept.push_back(c);
+  std::erase_if(m, [&](const Candidate* c) { return std::find(kept.begin(), kept.end(), c) == kept.end(); });
+}
+
 // "the bike in the bus lane": on a lane of that use. A map with no such lane says nothing either
 // way ("the cars waiting to turn left" on a road without turn lanes), so nothing is narrowed.
 void keep_on_lanes_of_use(const Selector& t, const scene::Scene& scene, std::vector<const Candidate*>& m) {
   if (!t.lane_use) return;
+  if (*t.lane_use == "rail_crossing") return keep_at_rail_crossing(scene, m);
   const auto lanes = language::lanes_for_use(scene, *t.lane_use);
   // A lane named by a word of its own ("the drop-off lane") that the map does not have selects
   // nothing, rather than everything.

@@ -83,6 +83,7 @@ std::string use_words(const std::string& use, bool lane_word) {
     return out;
   }
   if (use == "turn_left" || use == "turn_right") return use.substr(5) + (lane_word ? "-turn lane" : "-turn");
+  if (use == "rail_crossing") return "level crossing";
   std::string out = use;
   std::replace(out.begin(), out.end(), '_', ' ');
   const bool a_lane = std::any_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return use == r.role; }) ||
@@ -92,7 +93,7 @@ std::string use_words(const std::string& use, bool lane_word) {
 
 bool is_known_use(const std::string& use) {
   if (use.starts_with("turn") || use == "roundabout" || use == "car_park" || use == "lay_by" || use == "ego_turn" ||
-      use == "closed" || use == "fuel_station" || use.starts_with("place:"))
+      use == "closed" || use == "fuel_station" || use == "rail_crossing" || use.starts_with("place:"))
     return true;
   return std::any_of(std::begin(kRoles), std::end(kRoles), [&](const Role& r) { return use == r.role; });
 }
@@ -117,6 +118,42 @@ std::optional<LaneName> closed_lane(const std::vector<std::string>& w) {
 }
 
 }  // namespace
+
+namespace {
+
+// "at the level crossing", "waiting at the barrier", "near the tracks": where a railway crosses the
+// road (rail_crossings). "The barrier" alone is an object to add or remove: a place only after a
+// word saying where.
+std::optional<LaneName> rail_crossing_name(const std::vector<std::string>& w) {
+  for (const char* place : {"level crossing", "level crossings", "railway crossing", "railroad crossing", "rail crossing",
+                            "train crossing", "grade crossing"})
+    if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
+      return LaneName{"rail_crossing", at, at + text::words(place).size()};
+  for (const char* place : {"the crossing gates", "the crossing gate", "the barriers", "the barrier", "the boom gate",
+                            "the train tracks", "the railway tracks", "the railway line", "the railway", "the railroad",
+                            "the rail line", "the tracks"}) {
+    const size_t at = text::find_phrase(w, place);
+    if (at != std::string::npos && at > 0 &&
+        text::has_any({w[at - 1]}, {"at", "by", "near", "before", "to", "toward", "approaching", "for", "from"}))
+      return LaneName{"rail_crossing", at, at + text::words(place).size()};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> rail_crossings(const scene::LaneMap& map) {
+  std::vector<Eigen::Vector2d> out;
+  for (size_t i = 0; i < map.lanes().size(); ++i) {
+    const auto& lane = map.lanes()[i];
+    const bool rail = lane.type == "rail" || lane.type == "railway" || lane.type == "train" ||
+                      lane.id.find("rail") != std::string::npos;
+    if (!rail) continue;
+    for (const auto& x : map.crossings(int(i)))
+      if (map.lanes()[size_t(x.other)].type == "driving") out.push_back(map.point_at(int(i), x.s_self));
+  }
+  return out;
+}
 
 std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
   if (auto shut = closed_lane(w)) return shut;
@@ -154,6 +191,7 @@ std::optional<LaneName> find_lane_name(const std::vector<std::string>& w) {
            {"tram line", "tram"}})
     if (const size_t at = text::find_phrase(w, place); at != std::string::npos)
       return LaneName{role, at, at + text::words(place).size()};
+  if (auto rail = rail_crossing_name(w)) return rail;
   // "in the passing place", "pull into the lay-by": a place beside the road to stop at.
   for (const char* place : {"passing place", "passing places", "passing bay", "passing bays", "lay-by", "lay-bys",
                             "layby", "laybys", "lay by", "turnout", "turnouts", "pullout", "pullouts"})
@@ -343,6 +381,7 @@ std::optional<LaneName> find_place_word(const std::vector<std::string>& w) {
 }
 
 std::vector<int> lanes_for_use(const scene::LaneMap& map, const std::string& use) {
+  if (use == "rail_crossing") return {};  // a point on the road, not a lane to drive or stand in
   const bool turn = use.starts_with("turn");
   const int side = use == "turn_left" ? 1 : use == "turn_right" ? -1 : 0;
   std::vector<int> out;

@@ -14,6 +14,7 @@ namespace chatsim::agents::language {
 // path takes after its turn), bus, turn, turn_left, turn_right, cycle, tram, taxi, hov,
 // roundabout ("on the roundabout": its ring), car_park ("in the car park": the lanes of that area),
 // closed ("the coned-off lane": a driving lane with cones, barriers or a construction vehicle in it),
+// rail_crossing ("at the level crossing": where a railway crosses the road, rail_crossings),
 // fuel_station ("at the gas station": its lanes and the bays beside them), place:<word>[#n]
 // (find_place_word),
 // or a word of the map's own ("service" for "the service road", "farm" for "the farm track").
@@ -48,6 +49,10 @@ std::optional<LaneName> find_beyond_place(const std::vector<std::string>& w);
 // "past the junction", "before the crossing", "near the lights": where along the road, by the
 // first junction ahead (after, before or near), not the cross street's lane; the words are blanked.
 std::optional<std::string> blank_junction_place(std::vector<std::string>& w);
+
+// Where a railway (a lane of type rail, or whose id says so) crosses a driving lane: the place
+// "at the level crossing" names (use rail_crossing, which has no lanes of its own).
+std::vector<Eigen::Vector2d> rail_crossings(const scene::LaneMap& map);
 
 // The map's lanes of that use: those whose id has the use's word; for turn lanes, with no such
 // id, the lanes that open off another (on the side said). None: the map does not name it.

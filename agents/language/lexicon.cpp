@@ -245,12 +245,12 @@ std::optional<std::string> undoubled_vehicle_noun(const std::string& word) {
 
 }  // namespace
 
-void correct_typos(std::vector<std::string>& w) {
+void correct_typos(std::vector<std::string>& w, const std::set<std::string>& names) {
   const auto& english = english_words();
   if (english.empty()) return;  // without a word list every unknown word could be a name: change nothing
   const auto& known = known_words();
   for (auto& word : w) {
-    if (std::binary_search(known.begin(), known.end(), word)) continue;
+    if (std::binary_search(known.begin(), known.end(), word) || names.contains(word)) continue;
     // A vehicle noun typed with a doubled letter can be a rare English word ("buss"): in a
     // command about vehicles it is the noun.
     if (english.contains(word)) {

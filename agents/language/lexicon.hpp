@@ -2,6 +2,7 @@
 // What words mean in this domain: colours, vehicle types and brands, scene categories.
 #include <array>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -75,7 +76,8 @@ bool is_color_word(const std::string& w);
 // "motorcyle" -> "motorcycle"), in place. Domain words: words.json, vehicles.json, colours and
 // nouns. A word of the English word lists (/usr/share/dict, $CHATSIM_WORDLIST) is never changed,
 // nor one with two equally near domain words; without a word list nothing is changed.
-void correct_typos(std::vector<std::string>& words);
+// Words in `names` (said with a capital inside a sentence: "a Lada Niva") are names, never typos.
+void correct_typos(std::vector<std::string>& words, const std::set<std::string>& names = {});
 
 // Loads the vocabulary and word lists now (an agent starting), so that its first command does not
 // wait for them (about 30 ms). Throws std::runtime_error when a vocabulary file is missing or broken.

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -18,7 +19,8 @@ const std::map<std::string, std::string>& spellings() {
       {"lorries", "trucks"}, {"tyre", "tire"}, {"u", "you"}, {"pls", "please"}, {"plz", "please"},
       {"fwd", "forward"}, {"thx", "thanks"}, {"bkwd", "backward"}, {"lhs", "left side"}, {"rhs", "right side"},
       {"w/", "with"}, {"w/o", "without"}, {"veh", "vehicle"}, {"vehs", "vehicles"}, {"approx", "about"},
-      {"yd", "yards"}, {"yds", "yards"}, {"ped", "pedestrian"}, {"peds", "pedestrians"}};
+      {"yd", "yards"}, {"yds", "yards"}, {"ped", "pedestrian"}, {"peds", "pedestrians"}, {"del", "delete"},
+      {"rm", "remove"}};
   return m;
 }
 
@@ -148,6 +150,24 @@ std::vector<std::string> words(std::string_view s_in) {
   flush();
   ordinals_to_words(out);
   // "m/s" stays one word; "km/h" too.
+  return out;
+}
+
+std::set<std::string> capitalised_words(std::string_view sentence) {
+  std::set<std::string> out;
+  const size_t first = sentence.find_first_not_of(" \t\"'(");
+  for (size_t i = 0; i < sentence.size(); ++i) {
+    const auto c = static_cast<unsigned char>(sentence[i]);
+    if (!std::isalpha(c) || (i > 0 && std::isalnum(static_cast<unsigned char>(sentence[i - 1])))) continue;
+    size_t end = i;
+    while (end < sentence.size() && std::isalnum(static_cast<unsigned char>(sentence[end]))) ++end;
+    if (std::isupper(c) && i != first && end - i > 1) {
+      std::string word(sentence.substr(i, end - i));
+      for (auto& ch : word) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+      out.insert(word);
+    }
+    i = end;
+  }
   return out;
 }
 

@@ -2,6 +2,7 @@
 // Small text tools for the offline interpreter: normalised words, phrase search, numbers
 // written as digits or words ("two", "half a metre", "1.5").
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,8 @@ namespace chatsim::agents::text {
 // ("lhs" -> "left side", "w/" -> "with"), and '&' read as "and".
 std::vector<std::string> words(std::string_view s);
 std::string join(const std::vector<std::string>& words, size_t begin = 0, size_t end = std::string::npos);
+// Words said with a capital after the sentence's first word ("add a Lada Niva"), lower-cased: names.
+std::set<std::string> capitalised_words(std::string_view sentence);
 
 // Index of the first occurrence of a phrase ("turn left") at or after `from`, or npos.
 size_t find_phrase(const std::vector<std::string>& w, std::string_view phrase, size_t from = 0);

@@ -59,9 +59,14 @@ std::optional<std::string> bare_place(const std::vector<std::string>& said) {
   static const std::vector<std::string> kPlaces{"in front of", "ahead of", "behind", "next to", "beside", "alongside",
                                                 "opposite", "right behind", "just behind", "right in front of",
                                                 "just in front of", "directly behind", "directly in front of"};
+  // "30 m behind", "20 metres further ahead": a distance before the place.
+  const auto amounts = text::quantities(c, text::length_units());
+  const size_t from = !amounts.empty() && amounts.front().begin == 0 ? amounts.front().end : 0;
+  const std::vector<std::string> place(c.begin() + long(from), c.end());
   const bool opens = std::any_of(kPlaces.begin(), kPlaces.end(), [&](const std::string& p) {
-    return text::find_phrase(c, p) == 0;
-  });
+    return text::find_phrase(place, p) == 0;
+  }) || (from > 0 && !place.empty() && place.size() <= 3 &&
+         text::has_any({place.back()}, {"behind", "ahead", "front"}));  // "2 m forward" moves the view
   // "in the bus lane", "on the left lane": a lane, said alone.
   const auto lane = language::find_lane_name(c);
   const bool in_lane = c.size() > 2 && (c[0] == "in" || c[0] == "on" || c[0] == "into") &&
@@ -74,8 +79,42 @@ std::optional<std::string> bare_place(const std::vector<std::string>& said) {
     return std::find(a.begin(), a.end(), x) != a.end() || std::find(d.begin(), d.end(), x) != d.end() ||
            x == "make" || x == "move" || x == "drive" || x == "driving" || x == "going" || x == "coming";
   };
-  if (std::any_of(c.begin(), c.end(), verb)) return std::nullopt;
+  // ("in the car park": the place's own words are no verb.)
+  for (size_t i = 0; i < c.size(); ++i)
+    if (verb(c[i]) && !(in_lane && i >= lane->begin && i < lane->end)) return std::nullopt;
   return text::join(c);
+}
+
+std::optional<std::string> cleared_place(const std::vector<std::string>& c) {
+  if (c.size() < 3 || !text::has_any({c[0]}, {"empty", "clear", "clean", "evacuate", "vacate"})) return std::nullopt;
+  const size_t the = c[1] == "the" ? 1 : (c[1] == "out" || c[1] == "up") && c[2] == "the" ? 2 : 0;
+  if (the == 0 || the + 1 >= c.size() || text::find_phrase(c, "of") != std::string::npos) return std::nullopt;
+  const std::vector<std::string> place(c.begin() + long(the), c.end());
+  if (text::has_any(place, {"queue", "queues", "tailback", "jam", "traffic"})) return "remove " + text::join(place);
+  if (detail::mentions_vehicle(place) ||
+      text::has_any(place, {"view", "camera", "scene", "picture", "frame", "whole", "entire", "everything"}))
+    return std::nullopt;
+  return "remove all vehicles in " + text::join(place);
+}
+
+std::optional<std::string> meant_correction(const std::vector<std::string>& said) {
+  std::vector<std::string> c = said;
+  while (!c.empty() && text::has_any({c.front()}, {"no", "nope", "sorry", "oh", "oops", "actually", "wait"}))
+    c.erase(c.begin());
+  size_t from = 0;
+  for (const char* marker : {"what i meant was", "what i meant is", "i meant", "i mean", "meant"})
+    if (text::find_phrase(c, marker) == 0) {
+      from = text::words(marker).size();
+      break;
+    }
+  if (from == 0 || from >= c.size()) return std::nullopt;
+  const std::vector<std::string> rest(c.begin() + long(from), c.end());
+  // "I meant a Kia Sorento", "I meant dark blue": what was added, said again.
+  if (rest[0] != "the" &&
+      (rest[0] == "a" || rest[0] == "an" || lexicon::is_color_word(rest[0]) || !lexicon::find_brands(rest).empty()))
+    return "make it " + text::join(rest);
+  if (const auto place = bare_place(rest)) return "put it " + *place;
+  return std::nullopt;
 }
 
 }  // namespace chatsim::agents::manager::detail

@@ -106,9 +106,14 @@ bool classify_whole(const Words& c, Instruction& in) {
   const bool removes = has_any({first}, {"remove", "delete", "erase", "eliminate", "wipe", "ditch"}) ||
                        text::find_phrase(c, "get rid of") == 0;
   if (removes) return false;
-  if (has_any(c, {"traffic jam", "jam", "jams", "standstill", "stop and go", "congested", "congestion", "gridlock",
-                  "stuck in traffic", "bumper to bumper", "jammed", "queue of",
-                  "tailback", "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
+  if (const auto cleared = cleared_place(c)) {  // "empty the drive-thru", "clear the queue at the barrier"
+    in = Instruction{"delete", *cleared, "", 1};
+    return true;
+  }
+  const bool joins_queue = has_any(c, {"back of the", "end of the"}) && has_any(c, {"queue", "line"});  // not a jam
+  if (!joins_queue && has_any(c, {"traffic jam", "jam", "jams", "standstill", "stop and go", "congested", "congestion",
+                                  "gridlock", "stuck in traffic", "bumper to bumper", "jammed", "queue of", "tailback",
+                                  "line of cars", "backed up", "queue at", "queuing", "queueing"})) {
     in.kind = "traffic_jam";
     return true;
   }
@@ -117,7 +122,9 @@ bool classify_whole(const Words& c, Instruction& in) {
       has_any(c, {"traffic"}) &&
       has_any(c, {"heavy", "heavier", "dense", "denser", "busier", "thick", "thicker", "crowded", "packed", "intense"});
   if (dense_traffic || has_any(c, {"busy road", "busy street", "heavy traffic", "rush hour", "lots of traffic",
-                                   "crowded road", "dense traffic", "busy", "more traffic", "lot of traffic"})) {
+                                   "crowded road", "dense traffic", "busy", "more traffic", "lot of traffic", "the rush",
+                                   "lunchtime rush", "lunch rush", "morning rush", "evening rush", "peak hour",
+                                   "peak time", "hectic", "heaving", "chaotic", "swamped"})) {
     in.kind = "busy_road";
     // "a busy Saturday at the gas station", "the car park is busy": a place to stop at, full of
     // parked cars (not "busy with traffic": cars driving there).
@@ -422,6 +429,7 @@ Instruction classify(const Words& c_in) {
   in.text = text::join(c);
   // "slower", "a bit closer", "in front of the bendy bus", "behind it": a change or a place said
   // alone revises what was spoken of last.
+  if (const auto meant = meant_correction(c)) return revises_last(*meant);
   if (const auto change = bare_change(c)) return revises_last("make it " + *change);
   if (const auto place = bare_place(c)) return revises_last("put it " + *place);
   const bool vehicle = mentions_vehicle(c);

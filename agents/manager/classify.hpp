@@ -38,6 +38,13 @@ std::optional<std::string> bare_change(const std::vector<std::string>& clause);
 // "in front of the bendy bus", "no, behind it", "in the bus lane": a place said alone, no verb, as
 // its words (without "no"); none for any other clause.
 std::optional<std::string> bare_place(const std::vector<std::string>& clause);
+// "empty the drive-thru", "clear out the lay-by", "clear the queue at the barrier": every vehicle
+// there goes, as the deletion to make ("remove all vehicles in the drive thru"); none for a clause
+// that names a vehicle or is not such a command.
+std::optional<std::string> cleared_place(const std::vector<std::string>& clause);
+// "sorry, I meant a Kia Sorento", "I meant behind it": a correction of what was added, as the
+// revision to make ("make it a kia sorento", "put it behind it"); none for any other clause.
+std::optional<std::string> meant_correction(const std::vector<std::string>& clause);
 
 // "move it behind the van" -> "move behind the van": the words naming the revised vehicle go
 // (references.cpp).

@@ -51,7 +51,11 @@ std::vector<std::string> sentences(const std::string& s) {
     // "2.5 m", "ID.4": a full stop inside a word or number ends no sentence.
     const bool decimal = c == '.' && i > 0 && i + 1 < s.size() && std::isalnum(static_cast<unsigned char>(s[i - 1])) &&
                          std::isalnum(static_cast<unsigned char>(s[i + 1]));
-    if ((c == '.' && !decimal) || c == '!' || c == '?' || c == ';' || c == '\n') {
+    // "turn left / remove the van": a slash or bar standing apart from its words parts a list
+    // ("km/h" and "w/o" keep theirs).
+    const bool apart = (c == '/' || c == '|') && ((i > 0 && std::isspace(static_cast<unsigned char>(s[i - 1]))) ||
+                                                  (i + 1 < s.size() && std::isspace(static_cast<unsigned char>(s[i + 1]))));
+    if ((c == '.' && !decimal) || c == '!' || c == '?' || c == ';' || c == '\n' || apart) {
       if (!out.back().empty()) out.emplace_back();
       continue;
     }
@@ -410,7 +414,7 @@ std::vector<Instruction> decompose(const std::string& command_in) {
     Words w;
     std::vector<bool> comma;
     words_with_commas(sentence, w, comma);
-    lexicon::correct_typos(w);
+    lexicon::correct_typos(w, text::capitalised_words(sentence));
     std::string previous;
     resolve_description(w, comma);
     for (const auto& c : with_phrases_attached(clauses(w, comma))) {

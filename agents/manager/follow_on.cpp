@@ -23,8 +23,11 @@ void Manager::continue_previous_round(const Conversation& c, const std::string& 
   if (instructions.front().kind != "add" && instructions.front().kind != "unclear") return;
   const auto w = text::words(command);
   const bool as_well = w.size() >= 2 && w[w.size() - 2] == "as" && w.back() == "well";
+  // "sorry, I meant the motorbike" after a deletion: that deletion, of another vehicle.
+  const size_t meant = text::find_any(w, {"i meant", "i mean"});
+  const bool meant_other = meant != std::string::npos && meant + 3 < w.size() && w[meant + 2] == "the";
   const bool goes_on = !w.empty() && (w.front() == "and" || w.front() == "also" || w.front() == "plus" ||
-                                      w.back() == "too" || as_well);
+                                      w.back() == "too" || as_well || meant_other);
   const auto& verbs = detail::add_verbs();
   if (!goes_on || std::any_of(w.begin(), w.end(), [&](const std::string& x) {
         return std::find(verbs.begin(), verbs.end(), x) != verbs.end();
@@ -39,6 +42,8 @@ void Manager::continue_previous_round(const Conversation& c, const std::string& 
                     (text::find_phrase(w, "the next") != std::string::npos && !detail::mentions_vehicle(w));
   if (next)
     instructions.front().text = last.back().get<std::string>().substr(kDelete.size());
+  else if (meant_other)
+    instructions.front().text = "remove " + text::join(w, meant + 2);
   else
     instructions.front().text = "remove " + instructions.front().text;
 }
@@ -90,7 +95,7 @@ bool Manager::replaces_last_round(const Conversation& c, const std::string& comm
   if (c.rounds.empty() || c.undo.empty() || instructions.empty()) return false;
   const auto w = text::words(command);
   const bool opens = !w.empty() && (w.front() == "no" || w.front() == "nope" || w.front() == "actually" ||
-                                    w.front() == "sorry" || w.front() == "oops");
+                                    w.front() == "sorry" || w.front() == "oops" || text::find_phrase(w, "i meant") == 0);
   const bool corrects = std::find(w.begin(), w.end(), "instead") != w.end() ||
                         text::find_phrase(w, "i meant") != std::string::npos ||
                         text::find_phrase(w, "i mean") != std::string::npos;

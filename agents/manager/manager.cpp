@@ -241,6 +241,7 @@ json Manager::others_json(const Conversation& c, int except) const {
 bool Manager::plan_motion(Conversation& c, AddedVehicle& v, const json& args_in, const std::string& text) {
   json args = args_in;
   if (c.view.is_object()) args["ego_motion"] = c.view.value("ego_motion", "none");  // "at the same speed as me"
+  speed_of_vehicle(c, args["intent"], v.id);
   const auto plan = call("motion", c, "plan", args);
   if (!plan.ok) {
     // A plan that cannot be made is an answer; an agent that failed is not.
@@ -406,7 +407,8 @@ bool Manager::replan_revised(Conversation& c, int t, const json& said, const std
     if (side == "left" || side == "right") keep["placement"] = side + "_front";
   }
   // Same place unless told otherwise: a revision of how it moves keeps where it starts.
-  const bool place_said = keep.contains("placement") || keep.contains("relative") || keep.contains("distance_m");
+  const bool place_said = keep.contains("placement") || keep.contains("relative") || keep.contains("distance_m") ||
+                          keep.contains("lane_use") || keep.contains("lane");  // "no, in the car park"
   const bool keeps_start = !place_said && !v.intent.contains("relative") && v.resolved.contains("distance_m");
   if (keeps_start) keep["distance_m"] = v.resolved["distance_m"];
   json args{{"base_intent", base}, {"intent", keep}, {"size_lwh", v.asset["size_lwh"]},

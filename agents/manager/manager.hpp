@@ -112,6 +112,9 @@ class Manager {
   // The start of the vehicle a placement is relative to: an added one (not `except`), else a
   // recorded one the deletion agent selects by the same words; nullopt when none matches.
   std::optional<nlohmann::json> find_anchor(Conversation& c, const std::string& reference, int except);
+  // "twice as fast as the cyclist": that vehicle's speed, times the factor, as the intent's
+  // speed_mps (speed_of.cpp); a vehicle not found is said in the notes.
+  void speed_of_vehicle(Conversation& c, nlohmann::json& intent, const std::string& self_id);
   std::optional<nlohmann::json> ordinal_of_removed(Conversation& c, const std::string& reference);
   // "make it the same colour as the coach": the reference's colour said as a word ("white").
   std::string colours_of_references(Conversation& c, const std::string& text);

@@ -163,6 +163,10 @@ std::vector<Instruction> titled(const std::string& sentence, size_t colon) {
                                              (!head.empty() && text::has_any({head[0]}, {"clear", "empty", "remove"})));
   if (removal && !named.empty() && text::has_any({named[0]}, {"the", "both", "those", "these", "all", "every", "any"}))
     return decompose("remove " + sentence.substr(colon + 1));
+  // "del: motorbike", "add: red suv": a title that is a verb alone acts on the detail.
+  if (head.size() == 1 && text::has_any(head, {"add", "insert", "put", "place", "remove", "delete", "erase", "clear"}) &&
+      !named.empty())
+    return decompose(head[0] + " " + sentence.substr(colon + 1));
   auto body = decompose(sentence.substr(colon + 1));
   // "Make it look like school's out: ..." describes the scene the detail builds.
   const bool scene_title = text::has_any(head, {"look like", "looks like", "as if", "as though", "feel like"});

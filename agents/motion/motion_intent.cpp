@@ -42,6 +42,10 @@ void MotionIntent::merge(const MotionIntent& o) {
     speed_mps = o.speed_mps;
     speed.reset();
   }
+  if (o.speed_of || o.speed_mps || o.speed) {  // a speed said anew replaces one matched before
+    speed_of = o.speed_of;
+    speed_factor = o.speed_factor;
+  }
   if (o.direction) direction = o.direction;
   if (o.slope) slope = o.slope;
   if (o.wrong_way) wrong_way = o.wrong_way;
@@ -71,6 +75,8 @@ nlohmann::json to_json(const MotionIntent& m) {
   util::put_optional(j, "action", m.action);
   util::put_optional(j, "speed", m.speed);
   util::put_optional(j, "speed_mps", m.speed_mps);
+  util::put_optional(j, "speed_of", m.speed_of);
+  util::put_optional(j, "speed_factor", m.speed_factor);
   util::put_optional(j, "direction", m.direction);
   util::put_optional(j, "slope", m.slope);
   util::put_optional(j, "wrong_way", m.wrong_way);
@@ -98,6 +104,8 @@ MotionIntent intent_from_json(const nlohmann::json& j) {
   util::get_optional(j, "action", m.action);
   util::get_optional(j, "speed", m.speed);
   util::get_optional(j, "speed_mps", m.speed_mps);
+  util::get_optional(j, "speed_of", m.speed_of);
+  util::get_optional(j, "speed_factor", m.speed_factor);
   util::get_optional(j, "direction", m.direction);
   util::get_optional(j, "slope", m.slope);
   util::get_optional(j, "wrong_way", m.wrong_way);

@@ -33,6 +33,10 @@ struct MotionIntent {
                                           // lane_change_right, backward, static, cut_in
   std::optional<std::string> speed;       // slow, normal, fast, faster, slower
   std::optional<double> speed_mps;
+  // "twice as fast as the cyclist": the speed of that vehicle as said (the manager makes it
+  // speed_mps), or "ego"; times speed_factor.
+  std::optional<std::string> speed_of;
+  std::optional<double> speed_factor;
   std::optional<std::string> direction;   // toward, away
   std::optional<std::string> slope;       // up, down: "coming down the hill" (which way that is, the map says)
   std::optional<bool> wrong_way;

@@ -9,6 +9,7 @@
 #include "agents/language/text.hpp"
 #include "agents/motion/motion_intent.hpp"
 #include "agents/motion/motion_lanes.hpp"
+#include "agents/motion/motion_speed.hpp"
 
 namespace chatsim::agents::motion {
 namespace {
@@ -67,6 +68,25 @@ std::optional<RelativePlacement> find_relative(Words& w) {
       if (p.chase) r.region = "back";
       return r;
     }
+  }
+  return std::nullopt;
+}
+
+// "joining the back of the drive-thru queue", "at the end of the line at the barrier": behind the
+// vehicle at that end of the queue (the deletion agent finds which), not behind the ego.
+std::optional<RelativePlacement> find_queue_end(Words& w) {
+  for (size_t at = 0; at + 3 < w.size(); ++at) {
+    if (!has_any({w[at]}, {"back", "end", "tail", "rear"}) || w[at + 1] != "of" || w[at + 2] != "the") continue;
+    size_t q = at + 3;
+    while (q < w.size() && q < at + 7 && !has_any({w[q]}, {"queue", "line", "tailback"})) ++q;
+    if (q >= w.size() || q >= at + 7) continue;
+    size_t end = q + 1;
+    if (end + 1 < w.size() && (w[end] == "at" || w[end] == "for" || w[end] == "in") && w[end + 1] == "the")
+      for (end += 2; end < w.size() && end < q + 7 && !has_any({w[end]}, {"and", "with", "then", "but", "while"});)
+        ++end;
+    RelativePlacement r{"the vehicle at the " + text::join(w, at, end), "back"};
+    std::fill(w.begin() + long(at), w.begin() + long(end), "_");
+    return r;
   }
   return std::nullopt;
 }
@@ -183,37 +203,6 @@ std::optional<std::string> find_action(const Words& w) {
                   "get going", "pull away", "pulls away", "filtering", "lane splitting", "splitting lanes"}))
     return "straight";
   return std::nullopt;
-}
-
-void find_speed(const Words& w, MotionIntent& m) {
-  for (const auto& q : text::quantities(w, {"km/h", "kilometers per hour", "kilometer per hour", "km per hour"})) {
-    m.speed_mps = q.value / 3.6;
-    return;
-  }
-  for (const auto& q : text::quantities(w, {"mph", "miles per hour", "mile per hour"})) {
-    m.speed_mps = q.value * 0.44704;
-    return;
-  }
-  for (const auto& q : text::quantities(w, {"m/s", "meters per second", "meter per second"})) {
-    m.speed_mps = q.value;
-    return;
-  }
-  // "at the same speed as me", "keeping pace with us": the ego's own speed; "at the same speed"
-  // with nothing else to match is the ego's too.
-  if (has_any(w, {"same speed as me", "same speed as us", "same speed as the ego", "keeping pace with me",
-                  "keeping pace with us", "keeps pace with me", "keep pace with me", "as fast as me", "as fast as us",
-                  "at my speed", "at our speed", "matching my speed", "matching our speed", "match my speed"}) ||
-      (!m.relative && has_any(w, {"at the same speed", "the same speed"})))
-    m.speed = "ego";
-  else if (has_any(w, {"faster", "speed up", "speeds up", "quicker", "accelerate", "more quickly"})) m.speed = "faster";
-  else if (has_any(w, {"slower", "slow down", "slows down", "more slowly", "decelerate"})) m.speed = "slower";
-  else if (has_any(w, {"fast", "quickly", "speeding", "high speed", "rapidly", "racing", "quick", "speedy", "at speed",
-                       "full speed", "top speed", "rushing", "hurry"}))
-    m.speed = "fast";
-  else if (has_any(w, {"slow", "slowly", "crawl", "crawls", "crawling", "low speed", "leisurely", "gently"}))
-    m.speed = "slow";
-  else if (has_any(w, {"normal speed", "normally", "moderate speed", "average speed", "regular speed"}))
-    m.speed = "normal";
 }
 
 }  // namespace
@@ -358,6 +347,7 @@ void find_direction(const Words& w, MotionIntent& m) {
 MotionIntent parse_motion(const std::string& instruction) {
   Words w = text::words(instruction);
   MotionIntent m;
+  const auto queue_end = find_queue_end(w);
   // "in the left-turn lane", "in the bus lane": a place; "left" and "turn" say no turn or side.
   if (const auto name = language::find_lane_name(w)) {
     m.lane_use = name->use;
@@ -367,7 +357,7 @@ MotionIntent parse_motion(const std::string& instruction) {
   }
   const auto change_to = lane_change_to(w);  // first: "change into the kerb lane" names a target, not a start
   m.lane_edge = find_lane_edge(w);
-  m.relative = find_place_of(w);
+  m.relative = queue_end ? queue_end : find_place_of(w);
   if (!m.relative) m.relative = find_relative(w);
   if (m.relative && has_any(text::words(instruction), {"chasing", "chase", "chases", "following", "follows", "follow",
                                                        "tailing", "pursuing"}))
@@ -410,6 +400,7 @@ MotionIntent parse_motion(const std::string& instruction) {
   else if (has_any(w, {"far ahead", "far away", "in the distance", "distant"}) || says_far(w))
     m.distance_word = "far";
   m.action = change_to ? change_to : find_action(w);
+  if (queue_end && !m.action && !m.speed && !m.speed_mps) m.action = "static";  // a queue stands
   // "turning into the side street on the left": the street's side is the turn's.
   if (!m.action && turning && target_side) m.action = "turn_" + *target_side;
   // Out of a side street onto the road: which way it turns is the road's to say (the planner's),

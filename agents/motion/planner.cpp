@@ -60,6 +60,19 @@ Obstacle trajectory_obstacle(const std::string& id, const Eigen::Vector3d& size,
   return ob;
 }
 
+Obstacle ego_obstacle(const scene::Scene& scene) {
+  constexpr double kLength = 4.6, kWidth = 1.9, kHeight = 1.6;
+  const double ahead = scene.ego_origin == "rear_axle" ? 1.4 : 0.0;  // rear axle to box centre
+  Obstacle ob{"ego", {kLength, kWidth, kHeight}, {}};
+  for (const auto& f : scene.frames) {
+    const Eigen::Vector3d p = f.ego_to_world.translation();
+    const Eigen::Vector3d x = f.ego_to_world.linear().col(0);
+    const double yaw = std::atan2(x.y(), x.x());
+    ob.poses.emplace_back(Pose2{p.x() + ahead * std::cos(yaw), p.y() + ahead * std::sin(yaw), yaw});
+  }
+  return ob;
+}
+
 namespace detail {
 
 // "park it in the parking lane": the side of the road the nearest parking lane is on (the right
@@ -225,8 +238,15 @@ PlanResult Planner::run_once() {
   // Free starts win; one held up behind traffic or leaving the lane map competes by its score
   // plus a penalty for that; a colliding one only when nothing else is left.
   std::optional<std::pair<Candidate, Evaluated>> best_colliding, best_imperfect;
-  const auto cost = [](const std::pair<Candidate, Evaluated>& ce) {
-    return ce.first.score + ce.second.slow_penalty + (ce.second.truncated ? kLeavesMapPenalty : 0.0);
+  // Placed by another vehicle, the place said stands (a note says when the recorded drive meets
+  // it); placed by the ego's surroundings, a start the recorded drive would run into loses. Behind
+  // the ego nearly every start is caught up with or catches up, and an abstract scene's vehicles
+  // (strict) are many: said, not searched round (it costs time: 82 -> 125 ms, 250 -> 310 ms).
+  const bool ego_matters = !m_.relative && m_.placement.value_or("front") != "back" && !req_.strict;
+  const double ego_penalty = ego_matters ? kMeetsEgoPenalty : 0.0;
+  const auto cost = [&](const std::pair<Candidate, Evaluated>& ce) {
+    return ce.first.score + ce.second.slow_penalty + (ce.second.truncated ? kLeavesMapPenalty : 0.0) +
+           (ce.second.meets_ego >= 0 ? ego_penalty : 0.0);
   };
   std::string invalid_reason;
   // The best-scored starts only: each costs a path, car following and a collision check over the
@@ -254,7 +274,7 @@ PlanResult Planner::run_once() {
       if (m_.action == "join" && !cands[i].parked && joins_met.size() < kMaxWaitingStarts) joins_met.push_back(cands[i]);
       continue;
     }
-    if (!e.truncated && e.slowed_to < 0) {
+    if (!e.truncated && e.slowed_to < 0 && (e.meets_ego < 0 || !ego_matters)) {
       if (best_imperfect && cost(*best_imperfect) <= cands[i].score) break;
       return finish(cands[i], e, result);
     }
@@ -312,6 +332,9 @@ PlanResult Planner::finish(const Candidate& c, const Evaluated& e, PlanResult re
     result.notes.push_back("the recorded path of " + e.crosses_pedestrian + " runs through it");
   if (e.waits_s > 0)
     result.notes.push_back("it waits " + fmt(e.waits_s) + " s for a gap in the traffic, then pulls out");
+  if (e.meets_ego >= 0)
+    result.notes.push_back("the recorded drive runs into it at t = " + fmt(times_[size_t(e.meets_ego)]) +
+                           " s (the camera car keeps its recorded path; slow the view, or place it further)");
   result.t_s.resize(e.poses.size());
   result.trajectory = e.poses;
   result.lane = scene_.lanes.lanes()[size_t(c.lane)].id;

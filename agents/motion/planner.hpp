@@ -40,6 +40,9 @@ struct PlanRequest {
   std::optional<Anchor> anchor;       // required when intent.relative is set
   bool strict = false;                // fail rather than accept a collision
   std::optional<double> ego_speed_mps;  // the ego's speed when a view change sets it, else recorded
+  // The recording car on its recorded path (ego_obstacle): it cannot give way, so a start it
+  // would meet loses score and, kept, is said in a note. None when the view changes its motion.
+  std::optional<Obstacle> ego;
 };
 
 struct PlanResult {
@@ -57,6 +60,9 @@ struct PlanResult {
 // The obstacles a scene's labelled objects make, minus the removed ones.
 std::vector<Obstacle> scene_obstacles(const scene::Scene& scene, const std::vector<std::string>& removed);
 Obstacle trajectory_obstacle(const std::string& id, const Eigen::Vector3d& size_lwh, const std::vector<Pose2>& trajectory);
+// The recording car itself along its recorded path (id "ego"): a passenger car's box, its centre
+// ahead of a rear-axle origin.
+Obstacle ego_obstacle(const scene::Scene& scene);
 
 PlanResult plan_motion(const scene::Scene& scene, const PlanRequest& request);
 

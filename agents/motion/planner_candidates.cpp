@@ -325,7 +325,10 @@ std::vector<Candidate> Planner::region_candidates(bool moving_on_parking) const 
         const double off = std::abs((road ? road->along : pe.norm()) - region.d_pref);
         c.score += lane_without_distance ? std::min(off, 30.0) + 0.1 * off : off;
         c.score += lane_hint_penalty(int(li), s, dir) + edge_penalty[li];
-        if (placement == "front" || placement == "back") c.score += 1.5 * std::abs(road ? road->lateral : pe.y());
+        // Off to one side costs less where a lane was named: the lane says where ("in the car
+        // park" beside the road).
+        const double off_axis = !use_lanes_.empty() && !m_.distance_m ? 0.2 : 1.5;
+        if (placement == "front" || placement == "back") c.score += off_axis * std::abs(road ? road->lateral : pe.y());
         // "Ahead" in a lane off to one side, no distance said: far enough up it to be in front.
         if (placement == "front" && !road && !m_.distance_m)
           c.score += 1.5 * std::max(0.0, std::abs(std::atan2(pe.y(), pe.x())) * 180 / std::numbers::pi - 20);

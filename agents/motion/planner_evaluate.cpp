@@ -27,7 +27,7 @@ double Planner::desired_speed(bool parked) const {
   // In a removed vehicle's place with no motion said: it moves as that vehicle did.
   if (m_.relative && m_.relative->region == "at" && req_.anchor && !m_.speed && !m_.action) return req_.anchor->speed_mps;
   if (m_.action == "backward") return word == "fast" ? 5.0 : word == "slow" ? 2.0 : 3.0;
-  if (word == "ego") return ego_speed_;
+  if (word == "ego") return ego_speed_ * m_.speed_factor.value_or(1.0);  // "twice as fast as me"
   return speed_for(word);
 }
 
@@ -220,6 +220,12 @@ Evaluated Planner::evaluate_at(const Candidate& c, double speed, double wait_s, 
       }
       e.first_collision = int(f);
       e.collides_with = ob.id;
+      break;
+    }
+  for (size_t f = 0; req_.ego && f < e.poses.size() && f < req_.ego->poses.size(); ++f)
+    if (req_.ego->poses[f] &&
+        boxes_overlap(e.poses[f], req_.size_lwh, *req_.ego->poses[f], req_.ego->size_lwh, 1.0, kClearanceM)) {
+      e.meets_ego = int(f);
       break;
     }
   return e;

@@ -30,6 +30,9 @@ constexpr double kClearanceM = 0.15;
 constexpr double kOffLaneReachM = 12.0;
 // Score a start loses for driving off the mapped lanes before the clip ends.
 constexpr double kLeavesMapPenalty = 10.0;
+// Score a start loses when the recording car's path runs into it: a tie-breaker, less than the
+// ego's direction unsaid (8): a heavier one turned vehicles round to dodge the ego (experiments.md).
+constexpr double kMeetsEgoPenalty = 6.0;
 constexpr double kDeg = kPi / 180;
 
 inline double wrap(double a) { return std::remainder(a, 2 * kPi); }
@@ -85,6 +88,7 @@ struct Evaluated {
   double slow_penalty = 0;   // added to the candidate's score for the speed lost behind traffic
   std::string crosses_pedestrian;  // a pedestrian's recorded path runs through it (said in a note)
   double waits_s = 0;        // stands at its start this long, then sets off from rest (a gap to join)
+  int meets_ego = -1;        // frame where the recording car's box meets it, -1: never
 };
 
 inline int legal_dir(const scene::Lane& lane) { return lane.direction == scene::TrafficDirection::Backward ? -1 : 1; }

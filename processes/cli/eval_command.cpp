@@ -136,6 +136,7 @@ void run_case(agents::manager::Manager& manager, const scene::Scene& scene, cons
     t.motion.action_match += q.action_match;
     t.motion.speed_match += q.speed_match;
     t.motion.no_overlap += q.no_overlap;
+    t.motion.clear_of_ego += q.clear_of_ego;
   }
   const bool ok = case_fail.empty();
   const json unresolved = state.is_object() ? state.value("unresolved", json::array()) : json::array();
@@ -179,7 +180,8 @@ json make_report(const EvalArgs& a, const std::string& backend, size_t cases, co
               {"motion", {{"vehicles", t.motion.vehicles}, {"on_lane", share(t.motion.on_lane, t.motion.vehicles)},
                           {"action_match", share(t.motion.action_match, t.motion.vehicles)},
                           {"speed_match", share(t.motion.speed_match, t.motion.vehicles)},
-                          {"no_overlap", share(t.motion.no_overlap, t.motion.vehicles)}}},
+                          {"no_overlap", share(t.motion.no_overlap, t.motion.vehicles)},
+                          {"clear_of_ego", share(t.motion.clear_of_ego, t.motion.vehicles)}}},
               {"slow_rounds", t.slow_rounds},
               {"failures", t.failures}};
 }

@@ -135,7 +135,8 @@ TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
                                     std::pair{"commands-blind-v26.jsonl", 0.95},
                                     std::pair{"commands-blind-v27.jsonl", 0.95},
                                     std::pair{"commands-blind-v28.jsonl", 0.95},
-                                    std::pair{"commands-blind-v29.jsonl", 0.9}}) {
+                                    std::pair{"commands-blind-v29.jsonl", 0.9},
+                                    std::pair{"commands-blind-v30.jsonl", 0.9}}) {
     const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file);
     ASSERT_GE(s.total, 40) << file;
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
@@ -143,9 +144,9 @@ TEST(Commands, BlindSetsKeepTheirScoreAndNoVehicleMeetsAnother) {
   }
 }
 
-// Blind sets v22 and v23- to v29-nuscenes: commands on a real recording (nuScenes scene-0916 as `chatsim
+// Blind sets v22 and v23- to v30-nuscenes: commands on a real recording (nuScenes scene-0916 as `chatsim
 // scene import nuscenes` writes it), each frozen before its first run (0.53; 0.70; 0.71; 0.60; 0.70; 0.80; 0.70;
-// 0.80).
+// 0.80; 0.80).
 TEST(Commands, BlindSetOnARealRecordingKeepsItsScore) {
   const auto data = test_support::shared_commands_dir().parent_path() / "nuscenes-scene-0916";
   if (!fs::exists(data)) GTEST_SKIP() << "shared data absent: " << data;
@@ -161,7 +162,8 @@ TEST(Commands, BlindSetOnARealRecordingKeepsItsScore) {
                                           std::tuple{"commands-blind-v26-nuscenes.jsonl", 0.9, 10},
                                           std::tuple{"commands-blind-v27-nuscenes.jsonl", 0.9, 10},
                                           std::tuple{"commands-blind-v28-nuscenes.jsonl", 0.9, 10},
-                                          std::tuple{"commands-blind-v29-nuscenes.jsonl", 0.8, 10}}) {
+                                          std::tuple{"commands-blind-v29-nuscenes.jsonl", 0.8, 10},
+                                          std::tuple{"commands-blind-v30-nuscenes.jsonl", 0.9, 10}}) {
     const auto s = score_set(fs::path(CHATSIM_SOURCE_DIR) / "tests/data" / file, dir);
     EXPECT_EQ(s.total, size) << file;
     EXPECT_GE(double(s.passed) / s.total, floor) << file << ": " << s.passed << "/" << s.total;
