@@ -382,10 +382,9 @@ MotionQuality motion_quality(const scene::Scene& s, const json& state) {
   size_t first_added = 0;
   const auto all = vehicles_of(s, state, &first_added);
   for (size_t a = first_added; a < all.size(); ++a) q.no_overlap += first_meeting(all, a, 0).empty() ? 1 : 0;
-  auto with_ego = all;
-  with_ego.push_back(agents::motion::ego_obstacle(s));
+  const auto ego = agents::motion::ego_obstacle(s);
   for (size_t a = first_added; a < all.size(); ++a)
-    q.clear_of_ego += first_meeting(with_ego, a, with_ego.size() - 1).empty() ? 1 : 0;
+    q.clear_of_ego += first_meeting({all[a], ego}, 0, 1).empty() ? 1 : 0;
   for (const auto& v : state.value("added", json::array())) {
     const Track t = track_of(v);
     if (t.p.empty()) continue;

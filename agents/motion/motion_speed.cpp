@@ -67,8 +67,8 @@ void find_speed(const Words& w, MotionIntent& m) {
   if (find_speed_of(w, m)) return;
   // "at the same speed as me", "keeping pace with us": the ego's own speed; "at the same speed"
   // with nothing else to match is the ego's too.
-  if (has_any(w, {"same speed as me", "same speed as us", "same speed as the ego", "keeping pace with me",
-                  "keeping pace with us", "keeps pace with me", "keep pace with me", "as fast as me", "as fast as us",
+  // ("as fast as me", "the same speed as us": find_speed_of.)
+  if (has_any(w, {"keeping pace with me", "keeping pace with us", "keeps pace with me", "keep pace with me",
                   "at my speed", "at our speed", "matching my speed", "matching our speed", "match my speed"}) ||
       (!m.relative && has_any(w, {"at the same speed", "the same speed"})))
     m.speed = "ego";

@@ -13,6 +13,14 @@ def line(x0, y0, x1, y1, step=5.0):
     return [[x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n, 0.0] for k in range(n + 1)]
 
 
+def joined(*points):
+    """A polyline through the given corners, 5 m steps on each leg."""
+    out = []
+    for a, b in zip(points, points[1:]):
+        out += line(a[0], a[1], b[0], b[1])[:-1]
+    return out + [[points[-1][0], points[-1][1], 0.0]]
+
+
 def lane(lid, pts, width=3.5, kind="driving"):
     return {"id": lid, "type": kind, "width": width, "direction": "forward",
             "centerline": [[round(v, 3) for v in p] for p in pts]}

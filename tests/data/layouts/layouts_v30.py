@@ -8,19 +8,11 @@
   and comes back out by an exit lane; a small car park beside the building.
 Run by make_layouts.py, or alone: python3 tests/data/layouts/layouts_v30.py (deterministic).
 """
-from layout_lib import SIZES, lane, line, obj, static, track_along, write
+from layout_lib import SIZES, joined, lane, line, obj, static, track_along, write
 
 TRACTOR = [4.0, 2.3, 2.8]
 VAN = [5.2, 2.0, 2.1]
 PICKUP = [5.4, 2.0, 1.9]
-
-
-def joined(*points):
-    """A polyline through the given corners, 5 m steps on each leg."""
-    out = []
-    for a, b in zip(points, points[1:]):
-        out += line(a[0], a[1], b[0], b[1])[:-1]
-    return out + [[points[-1][0], points[-1][1], 0.0]]
 
 
 def levelcrossing():
